@@ -1,0 +1,89 @@
+/*---------------------------------------------------------------------------*\
+  meshlessFoam: meshless fluid-structure interaction inside OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "particleField.H"
+#include "error.H"
+
+const Foam::Enum<Foam::meshless::particleField::kind>
+Foam::meshless::particleField::kindNames
+({
+    { kind::scalar, "scalar" },
+    { kind::vector, "vector" },
+    { kind::tensor, "tensor" },
+});
+
+
+Foam::label Foam::meshless::particleField::nComponents
+(
+    const kind k,
+    const label dim
+)
+{
+    switch (k)
+    {
+        case kind::scalar: return 1;
+        case kind::vector: return dim;
+        case kind::tensor: return dim*dim;
+    }
+    return 1;
+}
+
+
+Foam::meshless::particleField::particleField
+(
+    const word& name,
+    const kind k,
+    const label dim
+)
+:
+    name_(name),
+    kind_(k),
+    nCmpt_(nComponents(k, dim)),
+    data_()
+{}
+
+
+void Foam::meshless::particleField::resize(const label n)
+{
+    data_.resize(size_t(n)*nCmpt_, 0.0);
+}
+
+
+void Foam::meshless::particleField::fill(const double v)
+{
+    std::fill(data_.begin(), data_.end(), v);
+}
+
+
+void Foam::meshless::particleField::reorder
+(
+    const std::vector<label>& order,
+    std::vector<double>& scratch
+)
+{
+    const label n = label(order.size());
+    if (n != size())
+    {
+        FatalErrorInFunction
+            << "Field " << name_ << " has " << size()
+            << " particles but the ordering has " << n
+            << abort(FatalError);
+    }
+    if (scratch.size() < data_.size())
+    {
+        scratch.resize(data_.size());
+    }
+    const label nc = nCmpt_;
+    const double* src = data_.data();
+    double* dst = scratch.data();
+
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < n; ++i)
+    {
+        const double* s = src + size_t(order[i])*nc;
+        double* d = dst + size_t(i)*nc;
+        for (label c = 0; c < nc; ++c) d[c] = s[c];
+    }
+    std::copy(dst, dst + data_.size(), data_.begin());
+}
