@@ -9,6 +9,53 @@
 #include <omp.h>
 #endif
 
+template<int Dim>
+void Foam::meshless::neighbourList::queryChunk
+(
+    const cellLinkedList& cellsB,
+    const double* xA,
+    const label i0,
+    const label i1,
+    const bool excludeSelf,
+    std::vector<label>& buf,
+    size_t& used
+)
+{
+    const double r2max = cellsB.radius()*cellsB.radius();
+    const label* sorted = cellsB.sortedData();
+    const double* xB = cellsB.points();
+
+    for (label i = i0; i < i1; ++i)
+    {
+        const double* p = xA + size_t(i)*Dim;
+        const label skip = excludeSelf ? i : -1;
+        const size_t before = used;
+
+        cellsB.forEachRow(p, [&](const label k0, const label k1)
+        {
+            // Room for every candidate, then a branch-free compaction: the
+            // accept test is ~40 % true, a branch there mispredicts a lot
+            if (buf.size() < used + (k1 - k0))
+            {
+                buf.resize(2*(used + (k1 - k0)));
+            }
+            label* out = buf.data() + used;
+            for (label k = k0; k < k1; ++k)
+            {
+                const label j = sorted[k];
+                const double r2 = distanceSqr<Dim>(p, xB + size_t(j)*Dim);
+                *out = j;
+                out += (r2 <= r2max) & (j != skip);
+            }
+            used = out - buf.data();
+        });
+
+        // Row length for now; turned into offsets by build
+        offset_[i + 1] = label(used - before);
+    }
+}
+
+
 Foam::meshless::neighbourList::neighbourList()
 :
     size_(0),
@@ -58,23 +105,17 @@ void Foam::meshless::neighbourList::build
         const label i1 = label((long long)nA*(t + 1)/nt);
 
         std::vector<label>& buf = threadIndex_[t];
-        buf.clear();
+        size_t used = 0;
 
-        for (label i = i0; i < i1; ++i)
+        if (dim == 2)
         {
-            const label before = label(buf.size());
-            cellsB.forEachNeighbour
-            (
-                xA + size_t(i)*dim,
-                [&](const label j, const double)
-                {
-                    if (!excludeSelf || j != i) buf.push_back(j);
-                }
-            );
-            // Row length for now; turned into offsets below
-            offset_[i + 1] = label(buf.size()) - before;
+            queryChunk<2>(cellsB, xA, i0, i1, excludeSelf, buf, used);
         }
-        threadStart_[t + 1] = label(buf.size());
+        else
+        {
+            queryChunk<3>(cellsB, xA, i0, i1, excludeSelf, buf, used);
+        }
+        threadStart_[t + 1] = label(used);
 
         #pragma omp barrier
         #pragma omp single
@@ -101,6 +142,6 @@ void Foam::meshless::neighbourList::build
             run += offset_[i + 1];
             offset_[i + 1] = run;
         }
-        std::copy(buf.begin(), buf.end(), index_.begin() + threadStart_[t]);
+        std::copy(buf.begin(), buf.begin() + used, index_.begin() + threadStart_[t]);
     }
 }
