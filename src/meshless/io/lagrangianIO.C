@@ -107,7 +107,7 @@ void fromFoam
 
 
 template<class Type>
-void writeField
+void writeTypedField
 (
     const particleField& f,
     const label dim,
@@ -220,20 +220,35 @@ void Foam::meshless::lagrangianIO::write
 
     for (const word& name : set.fieldNames())
     {
-        if (name == particleSet::positionsName) continue;
-        const particleField& f = set.field(name);
-        switch (f.fieldKind())
+        if (name != particleSet::positionsName)
         {
-            case particleField::kind::scalar:
-                writeField<scalar>(f, dim, runTime, timeName, set.name());
-                break;
-            case particleField::kind::vector:
-                writeField<vector>(f, dim, runTime, timeName, set.name());
-                break;
-            case particleField::kind::tensor:
-                writeField<tensor>(f, dim, runTime, timeName, set.name());
-                break;
+            writeField(set, name, runTime, timeName);
         }
+    }
+}
+
+
+void Foam::meshless::lagrangianIO::writeField
+(
+    const particleSet& set,
+    const word& name,
+    const Time& runTime,
+    const word& timeName
+)
+{
+    const label dim = set.dim();
+    const particleField& f = set.field(name);
+    switch (f.fieldKind())
+    {
+        case particleField::kind::scalar:
+            writeTypedField<scalar>(f, dim, runTime, timeName, set.name());
+            break;
+        case particleField::kind::vector:
+            writeTypedField<vector>(f, dim, runTime, timeName, set.name());
+            break;
+        case particleField::kind::tensor:
+            writeTypedField<tensor>(f, dim, runTime, timeName, set.name());
+            break;
     }
 }
 

@@ -101,8 +101,8 @@ void Foam::meshless::neighbourList::build
         #endif
 
         // Fixed contiguous chunk of A for this thread
-        const label i0 = label((long long)nA*t/nt);
-        const label i1 = label((long long)nA*(t + 1)/nt);
+        const label i0 = label(static_cast<long long>(nA)*t/nt);
+        const label i1 = label(static_cast<long long>(nA)*(t + 1)/nt);
 
         std::vector<label>& buf = threadIndex_[t];
         size_t used = 0;

@@ -1,0 +1,129 @@
+#!/usr/bin/python3
+"""Case test: the seeded dam-break tank tutorial.
+
+blockMesh -> seedParticles -> checkParticles on a scratch copy, then the
+clouds are opened with VTK's vtkOpenFOAMReader (ParaView's reader) and
+checked against numbers known independently: lattice counts, masses, ids,
+the neighbour count of a 2D lattice at radius 2.6 dx, and the lattice kernel
+sum computed here from the Wendland C2 formula. Then bad seedParticlesDicts:
+each must fail with a message naming the file and keyword and leave no cloud
+on disk.
+"""
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "lib"))
+from caseTest import CaseTest, project_dir  # noqa: E402
+from readClouds import read_clouds  # noqa: E402
+
+
+def wendland_lattice_sum(ratio=1.3):
+    """sum_j W(|x_j|) dx^2 over a 2D unit lattice, Wendland C2, h = ratio dx"""
+    h = ratio
+    sigma = 7.0 / (4.0 * math.pi * h * h)
+    total = 0.0
+    n = int(2 * h) + 1
+    for i in range(-n, n + 1):
+        for j in range(-n, n + 1):
+            q = math.hypot(i, j) / h
+            if q < 2:
+                total += sigma * (1 - q / 2) ** 4 * (2 * q + 1)
+    return total
+
+
+def main():
+    t = CaseTest("seededTank")
+    tutorial = os.path.join(project_dir, "tutorials/seedParticles/damBreakTank")
+    work = tempfile.mkdtemp(prefix="seededTank.")
+    case = os.path.join(work, "damBreakTank")
+    shutil.copytree(tutorial, case, ignore=shutil.ignore_patterns(
+        "0", "log.*", "*.foam", "polyMesh"))
+    try:
+        run = subprocess.run(["./Allrun"], cwd=case, capture_output=True,
+                             text=True)
+        t.check("Allrun succeeds", run.returncode == 0, run.stderr[-2000:])
+        if run.returncode != 0:
+            return t.finish()
+
+        clouds = read_clouds(case, 0)
+        t.check("reader sees both clouds", sorted(clouds) == ["obstacle", "water"],
+                str(sorted(clouds)))
+        water, obstacle = clouds.get("water"), clouds.get("obstacle")
+        if not water or not obstacle:
+            return t.finish()
+
+        # 0.057 m column at 1 mm: 57 x 57; obstacle 6 mm x 40 mm at 0.5 mm
+        t.check_equal("water particles", water["particles"], 57 * 57)
+        t.check_equal("obstacle particles", obstacle["particles"], 12 * 80)
+        expected = {"id", "volume", "mass", "rho", "nNeighbours", "kernelSum"}
+        for name, c in clouds.items():
+            t.check(name + " fields", expected <= set(c["arrays"]),
+                    str(sorted(c["arrays"])))
+        t.check_close("water mass per particle",
+                      water["arrays"]["mass"]["range"][1], 1000 * 1e-6, 1e-6)
+        t.check_equal("water ids 0..n-1", water["arrays"]["id"]["range"],
+                      [0.0, 57 * 57 - 1.0])
+        b = water["bounds"]
+        t.check("water inside the column",
+                b[0] > 0 and b[1] < 0.057 and b[2] > 0 and b[3] < 0.057,
+                str(b))
+
+        # A lattice at radius 2.6 dx has 20 neighbours in 2D
+        for name, c in clouds.items():
+            t.check_equal(name + " interior neighbours",
+                          c["arrays"]["nNeighbours"]["range"][1], 20.0)
+            t.check_close(name + " interior kernel sum",
+                          c["arrays"]["kernelSum"]["range"][1],
+                          wendland_lattice_sum(), 1e-6)
+
+        bad_inputs(t, tutorial, work)
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+    return t.finish()
+
+
+def bad_inputs(t, tutorial, work):
+    """Each bad dictionary fails with file + keyword, and writes nothing."""
+    cases = {
+        "negative spacing": ("spacing     0.001;", "spacing     -0.001;",
+                             ["spacing", "seedParticlesDict", "> 0"]),
+        "zero density": ("density     1000;", "density     0;",
+                         ["density", "seedParticlesDict", "> 0"]),
+        "unknown zone": ("zone water;", "zone oil;",
+                         ["oil", "water", "seedParticlesDict"]),
+        "unknown region type": ("type cellZone;", "type sphere;",
+                                ["sphere", "cellZone", "box"]),
+        "missing spacing": ("spacing     0.001;", "",
+                            ["spacing", "seedParticlesDict"]),
+        "empty region": ("max (0.12 0.04 1)", "max (0.1141 0.00001 1)",
+                         ["obstacle", "no particle"]),
+    }
+    base = os.path.join(work, "bad")
+    shutil.copytree(tutorial, base, ignore=shutil.ignore_patterns(
+        "0", "log.*", "*.foam", "polyMesh"))
+    env = os.environ.copy()
+    subprocess.run(["blockMesh"], cwd=base, capture_output=True, env=env,
+                   check=True)
+    dict_path = os.path.join(base, "system/seedParticlesDict")
+    good = open(dict_path).read()
+    for what, (old, new, words) in cases.items():
+        assert old in good, old
+        open(dict_path, "w").write(good.replace(old, new, 1))
+        run = subprocess.run(["seedParticles"], cwd=base, capture_output=True,
+                             text=True, env=env)
+        out = run.stdout + run.stderr
+        t.check(what + ": fails", run.returncode != 0, out[-500:])
+        missing = [w for w in words if w not in out]
+        t.check(what + ": message names " + ", ".join(words), not missing,
+                out[-800:])
+        t.check(what + ": nothing written",
+                not os.path.exists(os.path.join(base, "0/lagrangian")))
+    open(dict_path, "w").write(good)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
