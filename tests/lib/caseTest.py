@@ -1,7 +1,11 @@
 """Small harness for the case tests: named checks, a summary line per test
 ('N passed, N failed'), exit code 1 on any failure."""
+import hashlib
 import os
+import shutil
+import subprocess
 import sys
+import tempfile
 
 project_dir = os.path.dirname(os.path.dirname(os.path.dirname(
     os.path.abspath(__file__))))
@@ -36,3 +40,39 @@ class CaseTest:
     def finish(self):
         print("%s: %d passed, %d failed" % (self.name, self.passed, self.failed))
         return 0 if self.failed == 0 else 1
+
+
+def copy_case(src, dst):
+    """A clean copy of a tutorial: no mesh, no results, no logs."""
+    shutil.copytree(src, dst, ignore=shutil.ignore_patterns(
+        "[0-9]*", "log.*", "*.foam", "polyMesh", "VTK", "postProcessing"))
+    return dst
+
+
+def run(cmd, cwd):
+    """Run a command in a case; returns (exit code, stdout + stderr)."""
+    p = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True)
+    return p.returncode, p.stdout + p.stderr
+
+
+def set_entry(case, dict_file, entry, value):
+    """foamDictionary -entry <entry> -set <value> on a case dictionary."""
+    code, out = run(["foamDictionary", dict_file, "-entry", entry, "-set",
+                     str(value)], case)
+    if code != 0:
+        raise RuntimeError(out)
+
+
+def snapshot(case):
+    """Every file below a case with a hash of its content."""
+    out = {}
+    for root, _, files in os.walk(case):
+        for f in files:
+            p = os.path.join(root, f)
+            out[os.path.relpath(p, case)] = hashlib.sha1(
+                open(p, "rb").read()).hexdigest()
+    return out
+
+
+def scratch(prefix):
+    return tempfile.mkdtemp(prefix=prefix + ".")

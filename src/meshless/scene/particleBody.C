@@ -1,0 +1,203 @@
+/*---------------------------------------------------------------------------*\
+  meshlessFoam: meshless fluid-structure interaction inside OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "particleBody.H"
+#include "bodyModel.H"
+#include "effect.H"
+#include "lagrangianIO.H"
+#include "dictionaryChecks.H"
+#include "OSspecific.H"
+#include <cmath>
+
+Foam::meshless::particleBody::particleBody
+(
+    const word& name,
+    const dictionary& dict,
+    const label dim,
+    const Time& runTime
+)
+:
+    name_(name),
+    dict_(dict),
+    set_(name, dim),
+    spacing_(0),
+    density_(readPositive(dict, "density")),
+    kernel_(),
+    model_(),
+    effects_(),
+    modelCost_(-1),
+    effectCosts_()
+{
+    const fileName cloudDir =
+        runTime.path()/runTime.timeName()/lagrangianIO::cloudLocal(name);
+    if (!isFile(cloudDir/particleSet::positionsName))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Body '" << name << "' has no particles at time "
+            << runTime.timeName() << " (no " << cloudDir.name()
+            << " cloud): seeded bodies are "
+            << lagrangianIO::clouds(runTime, runTime.timeName())
+            << ". Run seedParticles, or correct the body name."
+            << exit(FatalIOError);
+    }
+    lagrangianIO::read(set_, runTime, runTime.timeName());
+
+    if (dict.found("spacing"))
+    {
+        spacing_ = readPositive(dict, "spacing");
+    }
+    else if (set_.found("volume") && set_.size())
+    {
+        const particleField& V = set_.field("volume");
+        scalar sum = 0;
+        for (label i = 0; i < set_.size(); ++i) sum += V(i, 0);
+        spacing_ = std::pow(sum/set_.size(), 1.0/dim);
+    }
+    else
+    {
+        FatalIOErrorInFunction(dict)
+            << "Body '" << name << "': no 'spacing' given and its cloud has"
+            << " no volume field to derive it from: expected 'spacing'"
+            << exit(FatalIOError);
+    }
+
+    if (dict.found("kernel"))
+    {
+        kernel_ = smoothingKernel::New(dict.subDict("kernel"), dim, spacing_);
+    }
+}
+
+
+Foam::meshless::particleBody::~particleBody()
+{}
+
+
+void Foam::meshless::particleBody::select(costAccounting& costs)
+{
+    model_ = bodyModel::New(*this, dict_);
+    modelCost_ = costs.part(name_ + ": " + dict_.get<word>("model"));
+
+    if (dict_.found("effects"))
+    {
+        const dictionary& effectsDict = dict_.subDict("effects");
+        for (const entry& e : effectsDict)
+        {
+            if (!e.isDict())
+            {
+                FatalIOErrorInFunction(effectsDict)
+                    << "Entry '" << e.keyword() << "' in 'effects': expected"
+                    << " a dictionary, e.g. " << e.keyword() << " { ... }"
+                    << exit(FatalIOError);
+            }
+            effects_.append(effect::New(e.keyword(), e.dict(), *this));
+            effectCosts_.append(costs.part(name_ + ": " + e.keyword()));
+        }
+    }
+}
+
+
+Foam::meshless::bodyModel& Foam::meshless::particleBody::model()
+{
+    return *model_;
+}
+
+
+const Foam::meshless::bodyModel& Foam::meshless::particleBody::model() const
+{
+    return *model_;
+}
+
+
+const Foam::meshless::smoothingKernel&
+Foam::meshless::particleBody::kernel() const
+{
+    if (!kernel_.valid())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Body '" << name_ << "': its model needs a smoothing kernel;"
+            << " expected a 'kernel' dictionary (type, smoothingLengthRatio)"
+            << exit(FatalIOError);
+    }
+    return *kernel_;
+}
+
+
+Foam::meshless::particleField& Foam::meshless::particleBody::requireField
+(
+    const word& fieldName,
+    const word& requester
+)
+{
+    if (!set_.found(fieldName))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Body '" << name_ << "': " << requester << " needs the field "
+            << fieldName << ", which model " << dict_.get<word>("model")
+            << " does not provide (fields: " << set_.fieldNames() << ")"
+            << exit(FatalIOError);
+    }
+    return set_.field(fieldName);
+}
+
+
+void Foam::meshless::particleBody::addEffectAccelerations
+(
+    const scalar t,
+    particleField& acc,
+    costAccounting& costs
+) const
+{
+    forAll(effects_, i)
+    {
+        costAccounting::scope timer(costs, effectCosts_[i]);
+        effects_[i].addAcceleration(t, acc);
+    }
+}
+
+
+Foam::scalar Foam::meshless::particleBody::maxDeltaT(const scalar maxCo) const
+{
+    scalar dt = model_->maxDeltaT(maxCo);
+    for (const effect& e : effects_)
+    {
+        dt = min(dt, e.maxDeltaT());
+    }
+    return dt;
+}
+
+
+void Foam::meshless::particleBody::advance
+(
+    const scalar t,
+    const scalar dt,
+    costAccounting& costs
+)
+{
+    costAccounting::scope timer(costs, modelCost_);
+    model_->advance(t, dt, costs);
+}
+
+
+void Foam::meshless::particleBody::describe(Ostream& os) const
+{
+    os  << "    " << name_ << ": " << set_.size() << " particles, spacing "
+        << spacing_ << ", density " << density_ << ", model "
+        << dict_.get<word>("model");
+    if (kernel_.valid())
+    {
+        os  << ", kernel " << dict_.subDict("kernel").get<word>("type")
+            << " (h " << kernel_->h() << ")";
+    }
+    os  << nl;
+    if (effects_.empty())
+    {
+        os  << "        effects: none" << nl;
+    }
+    for (const effect& e : effects_)
+    {
+        os  << "        effect " << e.name() << ": ";
+        e.describe(os);
+        os  << nl;
+    }
+}

@@ -1,0 +1,217 @@
+/*---------------------------------------------------------------------------*\
+  meshlessFoam: meshless fluid-structure interaction inside OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "particleScene.H"
+#include "bodyModel.H"
+#include "lagrangianIO.H"
+#include "vtpWriter.H"
+#include "Time.H"
+#include <cmath>
+
+Foam::meshless::particleScene::particleScene(const polyMesh& mesh)
+:
+    mesh_(mesh),
+    dict_
+    (
+        IOobject
+        (
+            "particleProperties",
+            mesh.time().constant(),
+            mesh.time(),
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    ),
+    dim_(mesh.nSolutionD()),
+    zPlane_(0.5*(mesh.bounds().min().z() + mesh.bounds().max().z())),
+    domain_(mesh.bounds()),
+    bodies_(),
+    costs_(),
+    writeCost_(costs_.part("write")),
+    vtp_(dict_.getOrDefault<bool>("vtp", false))
+{
+    if (dim_ == 2 && mesh.solutionD()[vector::Z] != -1)
+    {
+        FatalErrorInFunction
+            << "2D meshes must have their empty direction along z"
+            << exit(FatalError);
+    }
+
+    const dictionary& bodiesDict = dict_.subDict("bodies");
+    if (bodiesDict.empty())
+    {
+        FatalIOErrorInFunction(bodiesDict)
+            << "No body in 'bodies': expected at least one"
+            << exit(FatalIOError);
+    }
+
+    scalar maxSpacing = 0;
+    for (const entry& e : bodiesDict)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(bodiesDict)
+                << "Entry '" << e.keyword() << "' in 'bodies': expected a"
+                << " body dictionary" << exit(FatalIOError);
+        }
+        bodies_.append
+        (
+            new particleBody(e.keyword(), e.dict(), dim_, mesh.time())
+        );
+        maxSpacing = max(maxSpacing, bodies_.last().spacing());
+    }
+    for (particleBody& b : bodies_)
+    {
+        b.select(costs_);
+    }
+
+    // Escape box: the mesh with room for wall layers and a splash
+    domain_.inflate(0.1);
+    domain_.min() -= vector::uniform(10*maxSpacing);
+    domain_.max() += vector::uniform(10*maxSpacing);
+}
+
+
+Foam::meshless::particleBody&
+Foam::meshless::particleScene::body(const word& name)
+{
+    for (particleBody& b : bodies_)
+    {
+        if (b.name() == name) return b;
+    }
+    wordList names(bodies_.size());
+    forAll(bodies_, i) names[i] = bodies_[i].name();
+    FatalIOErrorInFunction(dict_)
+        << "Unknown body '" << name << "': expected one of " << names
+        << exit(FatalIOError);
+    return bodies_[0];
+}
+
+
+Foam::label Foam::meshless::particleScene::nParticles() const
+{
+    label n = 0;
+    for (const particleBody& b : bodies_) n += b.particles().size();
+    return n;
+}
+
+
+Foam::scalar Foam::meshless::particleScene::maxDeltaT(const scalar maxCo) const
+{
+    scalar dt = GREAT;
+    for (const particleBody& b : bodies_)
+    {
+        dt = min(dt, b.maxDeltaT(maxCo));
+    }
+    return dt;
+}
+
+
+void Foam::meshless::particleScene::advance(const scalar t, const scalar dt)
+{
+    for (particleBody& b : bodies_)
+    {
+        if (b.model().moves()) b.advance(t, dt, costs_);
+    }
+}
+
+
+void Foam::meshless::particleScene::checkState
+(
+    const word& lastWrittenTime
+) const
+{
+    const word now = mesh_.time().timeName();
+    for (const particleBody& b : bodies_)
+    {
+        if (!b.model().moves()) continue;
+        const particleSet& set = b.particles();
+
+        for (const word& name : set.fieldNames())
+        {
+            const particleField& f = set.field(name);
+            const label nc = f.nComponents();
+            label bad = -1;
+            #pragma omp parallel for reduction(max:bad)
+            for (label i = 0; i < f.size(); ++i)
+            {
+                for (label c = 0; c < nc; ++c)
+                {
+                    if (!std::isfinite(f(i, c))) bad = std::max(bad, i);
+                }
+            }
+            if (bad >= 0)
+            {
+                FatalErrorInFunction
+                    << "Blow-up at time " << now << ": body " << b.name()
+                    << ", particle id " << set.ids()[bad] << ", field "
+                    << name << " is not finite." << nl
+                    << "    Likely causes: a time step above the stable one"
+                    << " (lower deltaT or maxCo), or a non-physical"
+                    << " material constant." << nl
+                    << "    Last good state on disk: time "
+                    << lastWrittenTime << exit(FatalError);
+            }
+        }
+
+        const particleField& x = set.positions();
+        for (label i = 0; i < set.size(); ++i)
+        {
+            point p(Zero);
+            for (label d = 0; d < dim_; ++d) p[d] = x(i, d);
+            if (dim_ == 2) p.z() = zPlane_;
+            if (!domain_.contains(p))
+            {
+                FatalErrorInFunction
+                    << "Blow-up at time " << now << ": body " << b.name()
+                    << ", particle id " << set.ids()[i] << " at " << p
+                    << " has left the domain " << domain_ << nl
+                    << "    Likely causes: a leaking wall, or a time step"
+                    << " above the stable one." << nl
+                    << "    Last good state on disk: time "
+                    << lastWrittenTime << exit(FatalError);
+            }
+        }
+    }
+}
+
+
+void Foam::meshless::particleScene::write()
+{
+    costAccounting::scope timer(costs_, writeCost_);
+    const Time& runTime = mesh_.time();
+    for (const particleBody& b : bodies_)
+    {
+        lagrangianIO::write(b.particles(), runTime, runTime.timeName(), zPlane_);
+    }
+    if (vtp_)
+    {
+        for (const particleBody& b : bodies_)
+        {
+            vtpWriter::write
+            (
+                b.particles(),
+                runTime.path()/"VTK",
+                runTime.timeName(),
+                zPlane_
+            );
+        }
+    }
+}
+
+
+void Foam::meshless::particleScene::describe(Ostream& os) const
+{
+    // A summary: writePrecision (maybe 17, for exact restarts) is too much
+    const int oldPrecision = os.precision(6);
+    os  << "Scene: " << dim_ << "D, " << bodies_.size() << " bodies, "
+        << nParticles() << " particles" << nl;
+    for (const particleBody& b : bodies_)
+    {
+        b.describe(os);
+    }
+    if (vtp_) os << "    output: lagrangian clouds and VTK .vtp" << nl;
+    os  << endl;
+    os.precision(oldPrecision);
+}

@@ -1,0 +1,156 @@
+/*---------------------------------------------------------------------------*\
+  meshlessFoam: meshless fluid-structure interaction inside OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "particleTimeLoop.H"
+#include "dictionaryChecks.H"
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+namespace
+{
+
+double wallSeconds()
+{
+    using namespace std::chrono;
+    return duration<double>(steady_clock::now().time_since_epoch()).count();
+}
+
+} // End anonymous namespace
+
+
+Foam::meshless::particleTimeLoop::particleTimeLoop
+(
+    Time& runTime,
+    particleScene& scene
+)
+:
+    runTime_(runTime),
+    scene_(scene),
+    adjustTimeStep_
+    (
+        runTime.controlDict().getOrDefault<bool>("adjustTimeStep", false)
+    ),
+    maxCo_(readPositiveOrDefault(runTime.controlDict(), "maxCo", 0.25)),
+    maxDeltaT_(readPositiveOrDefault(runTime.controlDict(), "maxDeltaT", GREAT)),
+    writeControl_(runTime.controlDict().get<word>("writeControl")),
+    writeInterval_(readPositive(runTime.controlDict(), "writeInterval"))
+{
+    if (adjustTimeStep_ && !runTime.controlDict().found("maxCo"))
+    {
+        FatalIOErrorInFunction(runTime.controlDict())
+            << "adjustTimeStep is on but 'maxCo' is missing: expected the"
+            << " Courant number of the adaptive step (e.g. maxCo 0.25;)"
+            << exit(FatalIOError);
+    }
+}
+
+
+Foam::scalar Foam::meshless::particleTimeLoop::adaptiveDeltaT() const
+{
+    scalar dt = min(scene_.maxDeltaT(maxCo_), maxDeltaT_);
+
+    // Land on the next write time and on the end time with equal steps no
+    // longer than dt (Time::adjustDeltaT would round the step count to the
+    // nearest, lengthening steps beyond the stable one by up to 50 %)
+    const scalar t = runTime_.value();
+    scalar target = runTime_.endTime().value();
+    if (writeControl_ == "adjustableRunTime")
+    {
+        const scalar t0 = runTime_.startTime().value();
+        const scalar k = std::floor((t - t0)/writeInterval_ + 1e-9) + 1;
+        target = min(target, t0 + k*writeInterval_);
+    }
+    const scalar remaining = target - t;
+    if (remaining > 0)
+    {
+        dt = remaining/std::ceil(remaining/dt - 1e-9);
+    }
+    return dt;
+}
+
+
+void Foam::meshless::particleTimeLoop::run(const stepFunction& step)
+{
+    const scalar stable = scene_.maxDeltaT(maxCo_);
+    if (adjustTimeStep_)
+    {
+        Info<< "Adaptive time step: maxCo " << maxCo_ << ", maxDeltaT "
+            << maxDeltaT_ << nl << endl;
+    }
+    else if (runTime_.deltaTValue() > stable)
+    {
+        WarningInFunction
+            << "Fixed deltaT " << runTime_.deltaTValue()
+            << " exceeds the stable step " << stable
+            << " of the initial state (maxCo " << maxCo_ << ")" << nl << endl;
+    }
+
+    const double start = wallSeconds();
+    const scalar tStart = runTime_.value();
+    double particleSteps = 0;
+    word lastWritten = runTime_.timeName();
+
+    Info<< "Starting time loop" << nl << endl;
+
+    while (runTime_.run())
+    {
+        if (adjustTimeStep_)
+        {
+            runTime_.setDeltaT(adaptiveDeltaT(), false);
+        }
+
+        ++runTime_;
+        const scalar dt = runTime_.deltaTValue();
+        const label nParticles = scene_.nParticles();
+
+        step(runTime_.value() - dt, dt);
+        particleSteps += nParticles;
+
+        scene_.checkState(lastWritten);
+
+        runTime_.write();
+        if (runTime_.writeTime())
+        {
+            scene_.write();
+            lastWritten = runTime_.timeName();
+        }
+
+        const double elapsed = wallSeconds() - start;
+        const scalar done = runTime_.value() - tStart;
+        const scalar left =
+            max(runTime_.endTime().value() - runTime_.value(), 0);
+        char line[256];
+        std::snprintf
+        (
+            line, sizeof(line),
+            "deltaT = %.6g  particles = %ld\n"
+            "ExecutionTime = %.4g s  ClockTime = %.0f s  remaining ~ %.3g s",
+            dt, long(nParticles), runTime_.elapsedCpuTime(),
+            double(runTime_.elapsedClockTime()),
+            done > 0 ? elapsed*left/done : 0.0
+        );
+        Info<< "Time = " << runTime_.timeName() << nl << line << nl << endl;
+    }
+
+    // Time writes only at write times; the final state is kept regardless
+    // so that a run can always be continued from where it stopped
+    if (lastWritten != runTime_.timeName())
+    {
+        Info<< "Writing the final state at time " << runTime_.timeName()
+            << " (not a write time)" << nl << endl;
+        runTime_.writeNow();
+        scene_.write();
+    }
+
+    const double loop = wallSeconds() - start;
+    scene_.costs().print(Info, loop, particleSteps);
+    char line[128];
+    std::snprintf
+    (
+        line, sizeof(line), "Particle-steps per second: %.4g",
+        loop > 0 ? particleSteps/loop : 0.0
+    );
+    Info<< nl << line << nl << endl;
+}
