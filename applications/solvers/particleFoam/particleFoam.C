@@ -34,18 +34,7 @@ int main(int argc, char *argv[])
         "Advance uncoupled particle bodies (constant/particleProperties)"
     );
     #include "setRootCase.H"
-    #include "createTime.H"
-    #include "createPolyMesh.H"
+    #include "runScene.H"
 
-    meshless::particleScene scene(mesh);
-    scene.describe(Info);
-
-    meshless::particleTimeLoop loop(runTime, scene);
-    loop.run
-    (
-        [&](const scalar t, const scalar dt) { scene.advance(t, dt); }
-    );
-
-    Info<< "End" << nl << endl;
     return 0;
 }

@@ -220,7 +220,7 @@ void Foam::meshless::lagrangianIO::write
 
     for (const word& name : set.fieldNames())
     {
-        if (name != particleSet::positionsName)
+        if (name != particleSet::positionsName && set.field(name).written())
         {
             writeField(set, name, runTime, timeName);
         }

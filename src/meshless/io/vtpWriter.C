@@ -58,6 +58,7 @@ void Foam::meshless::vtpWriter::write
     {
         if (name == particleSet::positionsName) continue;
         const particleField& f = set.field(name);
+        if (!f.written()) continue;
         const label nc = f.nComponents();
 
         // Vectors as 3 components and tensors as 9, as ParaView expects

@@ -34,13 +34,15 @@ Foam::meshless::particleField::particleField
 (
     const word& name,
     const kind k,
-    const label dim
+    const label dim,
+    const bool written
 )
 :
     name_(name),
     kind_(k),
     nCmpt_(nComponents(k, dim)),
-    data_()
+    data_(),
+    written_(written)
 {}
 
 

@@ -99,6 +99,29 @@ Foam::meshless::particleField& Foam::meshless::particleSet::addField
 }
 
 
+Foam::meshless::particleField& Foam::meshless::particleSet::addScratchField
+(
+    const word& fieldName,
+    particleField::kind k
+)
+{
+    if (found(fieldName))
+    {
+        FatalErrorInFunction
+            << "Particle set " << name_ << ": scratch field " << fieldName
+            << " already exists" << exit(FatalError);
+    }
+    std::unique_ptr<particleField> f
+    (
+        new particleField(fieldName, k, dim_, false)
+    );
+    f->resize(size_);
+    particleField& ref = *f;
+    fields_.emplace(fieldName, std::move(f));
+    return ref;
+}
+
+
 void Foam::meshless::particleSet::resize(const label n)
 {
     id_.resize(n);

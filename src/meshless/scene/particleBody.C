@@ -156,6 +156,49 @@ void Foam::meshless::particleBody::addEffectAccelerations
 }
 
 
+void Foam::meshless::particleBody::addPairEffectAccelerations
+(
+    const pairContext& ctx,
+    particleField& acc,
+    costAccounting& costs
+) const
+{
+    forAll(effects_, i)
+    {
+        costAccounting::scope timer(costs, effectCosts_[i]);
+        effects_[i].addPairAcceleration(ctx, acc);
+    }
+}
+
+
+void Foam::meshless::particleBody::correctEffects
+(
+    const pairContext& ctx,
+    const label timeIndex,
+    costAccounting& costs
+) const
+{
+    forAll(effects_, i)
+    {
+        costAccounting::scope timer(costs, effectCosts_[i]);
+        effects_[i].correct(ctx, timeIndex);
+    }
+}
+
+
+Foam::label Foam::meshless::particleBody::costPart(const effect& e) const
+{
+    forAll(effects_, i)
+    {
+        if (&effects_[i] == &e) return effectCosts_[i];
+    }
+    FatalErrorInFunction
+        << "Effect " << e.name() << " is not one of body " << name_
+        << exit(FatalError);
+    return -1;
+}
+
+
 Foam::scalar Foam::meshless::particleBody::maxDeltaT(const scalar maxCo) const
 {
     scalar dt = model_->maxDeltaT(maxCo);

@@ -65,11 +65,34 @@ Foam::meshless::particleScene::particleScene(const polyMesh& mesh)
     {
         b.select(costs_);
     }
+    for (particleBody& b : bodies_)
+    {
+        b.model().connect(*this);
+    }
 
     // Escape box: the mesh with room for wall layers and a splash
     domain_.inflate(0.1);
     domain_.min() -= vector::uniform(10*maxSpacing);
     domain_.max() += vector::uniform(10*maxSpacing);
+}
+
+
+Foam::meshless::particleBody& Foam::meshless::particleScene::body
+(
+    const word& name,
+    const dictionary& referrer
+)
+{
+    for (particleBody& b : bodies_)
+    {
+        if (b.name() == name) return b;
+    }
+    wordList names(bodies_.size());
+    forAll(bodies_, i) names[i] = bodies_[i].name();
+    FatalIOErrorInFunction(referrer)
+        << "Unknown body '" << name << "': expected one of " << names
+        << exit(FatalIOError);
+    return bodies_[0];
 }
 
 
@@ -131,6 +154,7 @@ void Foam::meshless::particleScene::checkState
         for (const word& name : set.fieldNames())
         {
             const particleField& f = set.field(name);
+            if (!f.written()) continue;
             const label nc = f.nComponents();
             label bad = -1;
             #pragma omp parallel for reduction(max:bad)

@@ -1,0 +1,188 @@
+/*---------------------------------------------------------------------------*\
+  meshlessFoam: meshless fluid-structure interaction inside OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "ghostWall.H"
+#include "ulphOperators.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace meshless
+{
+namespace bodyModels
+{
+    defineTypeNameAndDebug(ghostWall, 0);
+    addToRunTimeSelectionTable(bodyModel, ghostWall, dictionary);
+}
+}
+}
+
+const Foam::Enum<Foam::meshless::bodyModels::ghostWall::slipType>
+Foam::meshless::bodyModels::ghostWall::slipTypeNames
+({
+    { slipType::noSlip, "noSlip" },
+    { slipType::freeSlip, "freeSlip" },
+});
+
+
+Foam::meshless::bodyModels::ghostWall::ghostWall
+(
+    particleBody& body,
+    const dictionary& dict
+)
+:
+    bodyModel(body, dict),
+    slip_(slipTypeNames.get("slip", dict)),
+    U_(body.particles().addField("U", particleField::kind::vector)),
+    p_(body.particles().addField("p", particleField::kind::scalar)),
+    rho_(body.particles().addField("rho", particleField::kind::scalar)),
+    mass_(body.particles().addField("mass", particleField::kind::scalar)),
+    V0_(body.requireField("volume", "model ghostWall")),
+    Uvisc_(body.particles().addScratchField("Uvisc", particleField::kind::vector)),
+    Minv_(body.particles().addScratchField("Minv", particleField::kind::tensor)),
+    S_(body.particles().addScratchField("S", particleField::kind::tensor)),
+    prepared_(false)
+{
+    if (dict.found("effects"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Body '" << body.name() << "' is a fixed ghost wall: its"
+            << " particles never move, so effects do not apply; remove"
+            << " 'effects'" << exit(FatalIOError);
+    }
+}
+
+
+template<int Dim>
+void Foam::meshless::bodyModels::ghostWall::prepareImpl
+(
+    const smoothingKernel& W
+)
+{
+    const particleSet& set = body_.particles();
+    const double* x = set.positions().data();
+    cellLinkedList cells(Dim, W.radius());
+    cells.build(x, set.size());
+    neighbourList own;
+    own.build(cells, x, set.size(), true);
+    const std::vector<neighbourSource> sources{{&own, x, V0_.data()}};
+    const label nDegenerate = ulphOperators::shapeTensorInverse<Dim>
+    (
+        x, set.size(), sources, W, Minv_
+    );
+    if (nDegenerate)
+    {
+        WarningInFunction
+            << "Wall " << body_.name() << ": " << nDegenerate
+            << " particles with a degenerate shape tensor (too few wall"
+            << " layers?); their pseudo-inverse is used" << endl;
+    }
+}
+
+
+void Foam::meshless::bodyModels::ghostWall::prepare(const smoothingKernel& W)
+{
+    if (prepared_) return;
+    if (body_.dim() == 2) prepareImpl<2>(W);
+    else prepareImpl<3>(W);
+    prepared_ = true;
+}
+
+
+template<int Dim>
+void Foam::meshless::bodyModels::ghostWall::interpolateImpl
+(
+    const neighbourList& wallToFluid,
+    const double* xF,
+    const double* pF,
+    const double* rhoF,
+    const double* UF,
+    const smoothingKernel& W,
+    const vector& g,
+    const scalar c0,
+    const scalar rho0
+)
+{
+    using namespace ulphOperators;
+    const particleSet& set = body_.particles();
+    const double* xS = set.positions().data();
+    const label n = set.size();
+    vectorD<Dim> gD;
+    for (int d = 0; d < Dim; ++d) gD(d) = g[d];
+    const bool noSlip = slip_ == slipType::noSlip;
+
+    double* p = p_.data();
+    double* rho = rho_.data();
+    double* m = mass_.data();
+    const double* V0 = V0_.data();
+    const double* Uw = U_.data();
+    double* Uv = Uvisc_.data();
+    double* S = S_.data();
+    const double* Minv = Minv_.data();
+
+    #pragma omp parallel for schedule(static)
+    for (label s = 0; s < n; ++s)
+    {
+        const Eigen::Map<const vectorD<Dim>> xs(xS + size_t(s)*Dim);
+        double sumW = 0, sumWp = 0;
+        vectorD<Dim> sumWrhoX = vectorD<Dim>::Zero();
+        vectorD<Dim> sumWU = vectorD<Dim>::Zero();
+        for
+        (
+            const label* fp = wallToFluid.begin(s);
+            fp != wallToFluid.end(s);
+            ++fp
+        )
+        {
+            const label f = *fp;
+            const vectorD<Dim> xsf =
+                Eigen::Map<const vectorD<Dim>>(xF + size_t(f)*Dim) - xs;
+            const double w = W.W(xsf.norm());
+            sumW += w;
+            sumWp += w*pF[f];
+            sumWrhoX += (w*rhoF[f])*xsf;
+            sumWU += w*Eigen::Map<const vectorD<Dim>>(UF + size_t(f)*Dim);
+        }
+
+        // Fixed walls: no wall acceleration in eq. 52
+        const double ps = sumW > 0 ? (sumWp - gD.dot(sumWrhoX))/sumW : 0;
+        const vectorD<Dim> uTilde =
+            sumW > 0 ? vectorD<Dim>(sumWU/sumW) : vectorD<Dim>::Zero();
+
+        p[s] = ps;
+        rho[s] = ps/(c0*c0) + rho0;
+        m[s] = rho[s]*V0[s];
+
+        const Eigen::Map<const vectorD<Dim>> uw(Uw + size_t(s)*Dim);
+        Eigen::Map<vectorD<Dim>>(Uv + size_t(s)*Dim) =
+            noSlip ? vectorD<Dim>(2*uw - uTilde) : uTilde;
+
+        Eigen::Map<tensorD<Dim>>(S + size_t(s)*Dim*Dim) =
+            -ps*Eigen::Map<const tensorD<Dim>>(Minv + size_t(s)*Dim*Dim);
+    }
+}
+
+
+void Foam::meshless::bodyModels::ghostWall::interpolate
+(
+    const neighbourList& wallToFluid,
+    const double* xF,
+    const double* pF,
+    const double* rhoF,
+    const double* UF,
+    const smoothingKernel& W,
+    const vector& g,
+    const scalar c0,
+    const scalar rho0
+)
+{
+    if (body_.dim() == 2)
+    {
+        interpolateImpl<2>(wallToFluid, xF, pF, rhoF, UF, W, g, c0, rho0);
+    }
+    else
+    {
+        interpolateImpl<3>(wallToFluid, xF, pF, rhoF, UF, W, g, c0, rho0);
+    }
+}

@@ -1,0 +1,439 @@
+/*---------------------------------------------------------------------------*\
+  meshlessFoam: meshless fluid-structure interaction inside OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "ulph.H"
+#include "ulphEquations.H"
+#include "ghostWall.H"
+#include "particleScene.H"
+#include "effect.H"
+#include "gravity.H"
+#include "viscosity.H"
+#include "dictionaryChecks.H"
+#include "addToRunTimeSelectionTable.H"
+#include <algorithm>
+#include <cmath>
+
+namespace Foam
+{
+namespace meshless
+{
+namespace bodyModels
+{
+    defineTypeNameAndDebug(ulph, 0);
+    addToRunTimeSelectionTable(bodyModel, ulph, dictionary);
+}
+}
+}
+
+const Foam::Enum<Foam::meshless::bodyModels::ulph::initialStateType>
+Foam::meshless::bodyModels::ulph::initialStateNames
+({
+    { initialStateType::rest, "rest" },
+    { initialStateType::hydrostatic, "hydrostatic" },
+});
+
+
+Foam::meshless::bodyModels::ulph::ulph
+(
+    particleBody& body,
+    const dictionary& dict
+)
+:
+    bodyModel(body, dict),
+    rho0_(body.density()),
+    c0_(readPositive(dict, "soundSpeed")),
+    gamma_(readPositiveOrDefault(dict, "gamma", 7)),
+    skin_(readPositiveOrDefault(dict, "neighbourSkin", 0.1)),
+    initialState_
+    (
+        initialStateNames.getOrDefault("initialState", dict, initialStateType::rest)
+    ),
+    freshStart_(!body.particles().found("p")),
+    wallNames_(dict.getOrDefault<wordList>("walls", wordList())),
+    U_(body.particles().addField("U", particleField::kind::vector)),
+    rho_(body.particles().addField("rho", particleField::kind::scalar)),
+    p_(body.particles().addField("p", particleField::kind::scalar)),
+    mass_(body.requireField("mass", "model ulph")),
+    V0_(body.requireField("volume", "model ulph")),
+    V_(body.particles().addScratchField("Vcurrent", particleField::kind::scalar)),
+    Minv_(body.particles().addScratchField("Minv", particleField::kind::tensor)),
+    S_(body.particles().addScratchField("S", particleField::kind::tensor)),
+    drho_(body.particles().addScratchField("drho", particleField::kind::scalar)),
+    dU_(body.particles().addScratchField("dU", particleField::kind::vector)),
+    x0_(body.particles().addScratchField("x0", particleField::kind::vector)),
+    U0_(body.particles().addScratchField("U0", particleField::kind::vector)),
+    rhoOld_(body.particles().addScratchField("rhoOld", particleField::kind::scalar)),
+    tau_(nullptr),
+    time_(nullptr),
+    g_(Zero),
+    mu_(0),
+    viscosityEffect_(nullptr),
+    neighbourCost_(-1),
+    nDegenerate_(0)
+{
+    body.kernel();      // required: FatalIOError naming the body if absent
+
+    // A cloud seeded without density starts at the reference density
+    bool anyRho = false;
+    for (label i = 0; i < rho_.size(); ++i) anyRho = anyRho || rho_(i, 0) != 0;
+    if (!anyRho) rho_.fill(rho0_);
+}
+
+
+Foam::meshless::bodyModels::ulph::~ulph()
+{}
+
+
+void Foam::meshless::bodyModels::ulph::connect(particleScene& scene)
+{
+    time_ = &scene.time();
+    neighbourCost_ = scene.costs().part(body_.name() + ": neighbour search");
+
+    if (const auto* grav = findEffect<effects::gravity>(body_))
+    {
+        g_ = grav->value();
+    }
+    if (const auto* visc = findEffect<effects::viscosity>(body_))
+    {
+        mu_ = visc->mu();
+        viscosityEffect_ = visc;
+        tau_ = &body_.particles().addScratchField
+        (
+            "tau",
+            particleField::kind::tensor
+        );
+    }
+
+    const smoothingKernel& W = body_.kernel();
+    const label dim = body_.dim();
+    for (const word& name : wallNames_)
+    {
+        particleBody& wb = scene.body(name, dict_);
+        ghostWall* wall = dynamic_cast<ghostWall*>(&wb.model());
+        if (!wall)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Body '" << name << "' in 'walls' has model "
+                << wb.dict().get<word>("model") << ": expected ghostWall"
+                << exit(FatalIOError);
+        }
+        wall->prepare(W);
+        walls_.push_back(wall);
+        wallBodies_.push_back(&wb);
+
+        // Walls do not move: their cell lists are built once
+        wallCells_.emplace_back
+        (
+            new cellLinkedList(dim, W.radius()*(1 + skin_))
+        );
+        wallCells_.back()->build
+        (
+            wb.particles().positions().data(),
+            wb.particles().size()
+        );
+        toWall_.emplace_back(new neighbourList());
+        fromWall_.emplace_back(new neighbourList());
+    }
+    cells_.reset(new cellLinkedList(dim, W.radius()*(1 + skin_)));
+
+    // Sound speed against eq. 7 for the column the fluid starts as
+    const scalar gMag = mag(g_);
+    if (gMag > 0)
+    {
+        const vector up = -g_/gMag;
+        scalar lo = GREAT, hi = -GREAT;
+        const particleField& x = body_.particles().positions();
+        for (label i = 0; i < x.size(); ++i)
+        {
+            scalar s = 0;
+            for (label d = 0; d < dim; ++d) s += up[d]*x(i, d);
+            lo = min(lo, s);
+            hi = max(hi, s);
+        }
+        const scalar H = hi - lo + body_.spacing();
+        const scalar c0min = 10*std::sqrt(2*gMag*H);
+        if (c0_ < c0min)
+        {
+            WarningInFunction
+                << "Body " << body_.name() << ": soundSpeed " << c0_
+                << " is below 10 sqrt(2 g H) = " << c0min
+                << " for its height H = " << H
+                << " (eq. 7): density variations may exceed 1 %" << endl;
+        }
+    }
+
+    if (initialState_ == initialStateType::hydrostatic && freshStart_)
+    {
+        if (gMag == 0)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "initialState hydrostatic needs a gravity effect"
+                << exit(FatalIOError);
+        }
+        hydrostaticStart();
+    }
+    for (label i = 0; i < rho_.size(); ++i)
+    {
+        p_(i, 0) = ulphEquations::taitPressure(rho_(i, 0), rho0_, c0_, gamma_);
+    }
+}
+
+
+void Foam::meshless::bodyModels::ulph::hydrostaticStart()
+{
+    const label dim = body_.dim();
+    const vector up = -g_/mag(g_);
+    const particleField& x = body_.particles().positions();
+    scalar top = -GREAT;
+    for (label i = 0; i < x.size(); ++i)
+    {
+        scalar s = 0;
+        for (label d = 0; d < dim; ++d) s += up[d]*x(i, d);
+        top = max(top, s);
+    }
+    top += 0.5*body_.spacing();
+
+    for (label i = 0; i < x.size(); ++i)
+    {
+        scalar s = 0;
+        for (label d = 0; d < dim; ++d) s += up[d]*x(i, d);
+        const scalar p = rho0_*mag(g_)*(top - s);
+        rho_(i, 0) = ulphEquations::taitDensity(p, rho0_, c0_, gamma_);
+        mass_(i, 0) = rho_(i, 0)*V0_(i, 0);
+    }
+}
+
+
+void Foam::meshless::bodyModels::ulph::buildNeighbours()
+{
+    const particleSet& set = body_.particles();
+    const double* x = set.positions().data();
+    cells_->build(x, set.size());
+    own_.build(*cells_, x, set.size(), true);
+    for (size_t k = 0; k < walls_.size(); ++k)
+    {
+        const particleSet& ws = wallBodies_[k]->particles();
+        toWall_[k]->build(*wallCells_[k], x, set.size(), false);
+        fromWall_[k]->build
+        (
+            *cells_,
+            ws.positions().data(),
+            ws.size(),
+            false
+        );
+    }
+}
+
+
+void Foam::meshless::bodyModels::ulph::setContext()
+{
+    const particleSet& set = body_.particles();
+    ctx_.dim = body_.dim();
+    ctx_.W = &body_.kernel();
+    ctx_.n = set.size();
+    ctx_.x = set.positions().data();
+    ctx_.U = U_.data();
+    ctx_.rho = rho_.data();
+    ctx_.mass = mass_.data();
+    ctx_.Minv = Minv_.data();
+    ctx_.rho0 = rho0_;
+    ctx_.c0 = c0_;
+
+    const size_t nSrc = 1 + walls_.size();
+    ctx_.sources.resize(nSrc);
+    ctx_.Usrc.resize(nSrc);
+    ctx_.massSrc.resize(nSrc);
+    Ssrc_.resize(nSrc);
+    Ucont_.resize(nSrc);
+
+    ctx_.sources[0] = {&own_, ctx_.x, V_.data()};
+    ctx_.Usrc[0] = U_.data();
+    ctx_.massSrc[0] = mass_.data();
+    Ssrc_[0] = S_.data();
+    Ucont_[0] = U_.data();
+    for (size_t k = 0; k < walls_.size(); ++k)
+    {
+        const particleSet& ws = wallBodies_[k]->particles();
+        ctx_.sources[k + 1] =
+            {toWall_[k].get(), ws.positions().data(), walls_[k]->V()};
+        ctx_.Usrc[k + 1] = walls_[k]->Uvisc();
+        ctx_.massSrc[k + 1] = walls_[k]->mass();
+        Ssrc_[k + 1] = walls_[k]->S();
+        Ucont_[k + 1] = walls_[k]->U();
+    }
+}
+
+
+template<int Dim>
+void Foam::meshless::bodyModels::ulph::evaluate
+(
+    const scalar t,
+    costAccounting& costs
+)
+{
+    particleSet& set = body_.particles();
+    const label n = set.size();
+    const double* x = set.positions().data();
+    const smoothingKernel& W = body_.kernel();
+
+    double* rho = rho_.data();
+    double* p = p_.data();
+    double* V = V_.data();
+    const double* m = mass_.data();
+
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < n; ++i)
+    {
+        V[i] = m[i]/rho[i];
+        p[i] = ulphEquations::taitPressure(rho[i], rho0_, c0_, gamma_);
+    }
+
+    for (size_t k = 0; k < walls_.size(); ++k)
+    {
+        walls_[k]->interpolate
+        (
+            *fromWall_[k], x, p, rho, U_.data(), W, g_, c0_, rho0_
+        );
+    }
+
+    setContext();
+
+    nDegenerate_ = ulphOperators::shapeTensorInverse<Dim>
+    (
+        x, n, ctx_.sources, W, Minv_
+    );
+
+    if (tau_)
+    {
+        costAccounting::scope timer(costs, body_.costPart(*viscosityEffect_));
+        ulphEquations::viscousStress<Dim>
+        (
+            n, x, U_.data(), Minv_.data(), ctx_.sources, ctx_.Usrc, W, mu_,
+            tau_->data()
+        );
+    }
+
+    ulphEquations::stressTimesMinv<Dim>
+    (
+        n, p, tau_ ? tau_->data() : nullptr, Minv_.data(), S_.data()
+    );
+    ulphEquations::continuity<Dim>
+    (
+        n, x, U_.data(), rho, Minv_.data(), ctx_.sources, Ucont_, W,
+        drho_.data()
+    );
+    ulphEquations::momentum<Dim>
+    (
+        n, x, rho, S_.data(), ctx_.sources, Ssrc_, W, dU_.data()
+    );
+
+    body_.addEffectAccelerations(t, dU_, costs);
+    body_.addPairEffectAccelerations(ctx_, dU_, costs);
+}
+
+
+void Foam::meshless::bodyModels::ulph::evaluateDim
+(
+    const scalar t,
+    costAccounting& costs
+)
+{
+    if (body_.dim() == 2) evaluate<2>(t, costs);
+    else evaluate<3>(t, costs);
+}
+
+
+Foam::scalar Foam::meshless::bodyModels::ulph::maxDeltaT
+(
+    const scalar maxCo
+) const
+{
+    const label n = U_.size();
+    const label dim = U_.nComponents();
+    const double* U = U_.data();
+    const double* a = dU_.data();
+    double maxU2 = 0, maxA2 = 0;
+
+    #pragma omp parallel for reduction(max:maxU2, maxA2)
+    for (label i = 0; i < n; ++i)
+    {
+        double u2 = 0, a2 = 0;
+        for (label d = 0; d < dim; ++d)
+        {
+            u2 += U[i*dim + d]*U[i*dim + d];
+            a2 += a[i*dim + d]*a[i*dim + d];
+        }
+        maxU2 = std::max(maxU2, u2);
+        maxA2 = std::max(maxA2, a2);
+    }
+    const scalar h = body_.kernel().h();
+    scalar dt = maxCo*h/(c0_ + std::sqrt(maxU2));
+    if (maxA2 > 0)
+    {
+        dt = min(dt, 0.25*std::sqrt(h/std::sqrt(maxA2)));
+    }
+    return dt;
+}
+
+
+void Foam::meshless::bodyModels::ulph::advance
+(
+    const scalar t,
+    const scalar dt,
+    costAccounting& costs
+)
+{
+    {
+        costAccounting::scope timer(costs, neighbourCost_);
+        buildNeighbours();
+    }
+
+    particleSet& set = body_.particles();
+    const label n = set.size();
+    const label nv = n*body_.dim();
+    double* x = set.positions().data();
+    double* U = U_.data();
+    double* rho = rho_.data();
+    const double* dU = dU_.data();
+    const double* drho = drho_.data();
+    double* x0 = x0_.data();
+    double* U0 = U0_.data();
+    double* rho0 = rhoOld_.data();
+
+    std::copy(x, x + nv, x0);
+    std::copy(U, U + nv, U0);
+    std::copy(rho, rho + n, rho0);
+
+    // Predictor (eq. 56, left)
+    evaluateDim(t, costs);
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < n; ++i) rho[i] = rho0[i] + 0.5*dt*drho[i];
+    #pragma omp parallel for schedule(static)
+    for (label k = 0; k < nv; ++k)
+    {
+        U[k] = U0[k] + 0.5*dt*dU[k];
+        x[k] = x0[k] + 0.5*dt*U[k];
+    }
+
+    // Corrector (eq. 56, right)
+    evaluateDim(t + 0.5*dt, costs);
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < n; ++i) rho[i] = rho0[i] + dt*drho[i];
+    #pragma omp parallel for schedule(static)
+    for (label k = 0; k < nv; ++k)
+    {
+        U[k] = U0[k] + dt*dU[k];
+        x[k] = x0[k] + dt*U[k];
+    }
+
+    setContext();
+    body_.correctEffects(ctx_, time_->timeIndex(), costs);
+
+    double* p = p_.data();
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < n; ++i)
+    {
+        p[i] = ulphEquations::taitPressure(rho[i], rho0_, c0_, gamma_);
+    }
+}
