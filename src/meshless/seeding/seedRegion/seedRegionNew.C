@@ -5,6 +5,7 @@
 #include "seedRegion.H"
 #include "surfaceRegion.H"
 #include "searchableSurface.H"
+#include "FlatOutput.H"
 
 Foam::autoPtr<Foam::meshless::seedRegion> Foam::meshless::seedRegion::New
 (
@@ -27,9 +28,9 @@ Foam::autoPtr<Foam::meshless::seedRegion> Foam::meshless::seedRegion::New
 
     FatalIOErrorInFunction(dict)
         << "Entry 'type' is " << regionType << ": expected a region type "
-        << dictionaryConstructorTablePtr_->sortedToc()
+        << flatOutput(dictionaryConstructorTablePtr_->sortedToc())
         << " or a closed searchable surface "
-        << searchableSurface::dictConstructorTablePtr_->sortedToc()
+        << flatOutput(searchableSurface::dictConstructorTablePtr_->sortedToc())
         << exit(FatalIOError);
 
     return nullptr;

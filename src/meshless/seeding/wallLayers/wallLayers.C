@@ -9,6 +9,7 @@
 #include "treeDataFace.H"
 #include "Random.H"
 #include "HashSet.H"
+#include "FlatOutput.H"
 
 namespace
 {
@@ -75,7 +76,7 @@ Foam::meshless::wallLayers::wallLayers
     {
         FatalIOErrorInFunction(dict)
             << "Entry 'patches' is empty: expected wall patch names from "
-            << candidates << exit(FatalIOError);
+            << flatOutput(candidates) << exit(FatalIOError);
     }
 
     labelHashSet chosen;
@@ -94,7 +95,7 @@ Foam::meshless::wallLayers::wallLayers
         {
             FatalIOErrorInFunction(dict)
                 << "Entry 'patches': " << name << " matches no patch;"
-                << " expected names from " << candidates
+                << " expected names from " << flatOutput(candidates)
                 << exit(FatalIOError);
         }
     }
@@ -140,7 +141,7 @@ void Foam::meshless::wallLayers::seed
     const scalar reach = nLayers_*dx;
 
     // Round-off allowances: a point at exactly N dx is kept, and an open
-    // patch must be nearer by more than round-off to take a point
+    // patch as near as the wall (to round-off) takes a point in front
     const scalar tol = 1e-9*dx;
 
     const labelList wallFaces(patchFaces(true));
@@ -177,14 +178,17 @@ void Foam::meshless::wallLayers::seed
         const label facei = wallFaces[wallHit.index()];
         const vector nf(areas[facei]/mag(areas[facei]));
 
-        // In front of the wall and nearer to an open patch: overhang
-        if ((r & nf) < -tol && otherTree)
+        // In front of the wall's plane and no nearer to it than to an open
+        // patch: beyond that patch (ties too: at an acute rim the points
+        // over the opening are as near to the rim as to the wall)
+        if
+        (
+            (r & nf) < -tol
+         && otherTree
+         && otherTree->findNearest(p, sqr(d + 1e3*tol)).hit()
+        )
         {
-            const scalar dOther = d - 1e3*tol;
-            if (dOther > 0 && otherTree->findNearest(p, sqr(dOther)).hit())
-            {
-                continue;
-            }
+            continue;
         }
 
         if (search.findCell(p) >= 0) continue;
