@@ -61,8 +61,9 @@ def lattice_index(x, origin, dx, offset=0.5):
     return i if abs(f - i) < 1e-4 else None
 
 
-def write_stl_box(path, lo, hi):
-    """A closed box as 12 outward-oriented triangles (ascii STL)"""
+def write_stl_box(path, lo, hi, outward=True):
+    """A closed box as 12 triangles (ascii STL), oriented outward (or, to
+    test the check, inward)"""
     x = (lo[0], hi[0])
     y = (lo[1], hi[1])
     z = (lo[2], hi[2])
@@ -82,6 +83,8 @@ def write_stl_box(path, lo, hi):
     with open(path, "w") as f:
         f.write("solid box\n")
         for q in quads:
+            if not outward:
+                q = q[::-1]
             for tri in ((q[0], q[1], q[2]), (q[0], q[2], q[3])):
                 f.write(" facet normal 0 0 0\n  outer loop\n")
                 for c in tri:
