@@ -12,7 +12,9 @@ import sys
 import vtk
 
 
-def read_clouds(case, time=None):
+def read_clouds(case, time=None, per_particle=False):
+    """Per cloud: particle count, arrays (components, range), bounds; with
+    per_particle also "points" (x, y, z) and "values" {array: [tuple]}."""
     foam = os.path.join(case, os.path.basename(os.path.abspath(case)) + ".foam")
     if not os.path.exists(foam):
         open(foam, "w").close()
@@ -52,6 +54,14 @@ def read_clouds(case, time=None):
                 "arrays": arrays,
                 "bounds": list(block.GetBounds()),
             }
+            if per_particle:
+                n = block.GetNumberOfPoints()
+                clouds[cloud]["points"] = [block.GetPoint(i) for i in range(n)]
+                clouds[cloud]["values"] = {
+                    pd.GetArray(a).GetName():
+                        [pd.GetArray(a).GetTuple(i) for i in range(n)]
+                    for a in range(pd.GetNumberOfArrays())
+                }
     return clouds
 
 

@@ -9,11 +9,19 @@ Group
 
 Description
     Samples the blockMesh geometry into particles: for each body of
-    system/seedParticlesDict, a lattice of the body's spacing over its
-    region, keeping the lattice points that OpenFOAM's cell search finds in
-    the mesh (and in the region). Writes each body as a lagrangian cloud at
-    the start time with its volume, mass and density per particle, and
-    prints per body the count, volume, mass and bounding box.
+    system/seedParticlesDict, the points of a lattice of the body's spacing
+    that lie in the mesh and in the body's region, or, for a wall body, the
+    layers of lattice points behind chosen patches. Writes each body as a
+    lagrangian cloud at the start time with its volume, mass and density per
+    particle (and a wall body's normal and wallDistance), and prints per
+    body the count, volume, mass and bounding box.
+
+    Every body is seeded on the lattice x = min(mesh bounds) + (i + offset)dx
+    (see seedLattice): bodies of one spacing and offset line up, so the wall
+    layers continue the fluid's lattice across the wall.
+
+    All bodies are seeded before anything is written: a bad body leaves
+    nothing on disk.
 
     The case's dimension is the mesh's: a mesh one cell thick with empty
     front and back patches (normal z) gives 2D particles in its mid-plane.
@@ -26,13 +34,38 @@ Usage
         {
             spacing   0.001;         // lattice spacing [m]
             density   1000;          // [kg/m^3]
+            offset    (0.5 0.5 0.5); // lattice offset / spacing (default)
             region    { type cellZone; zone water; }
             // region { type mesh; }                         // all cells
             // region { type box; min (0 0 0); max (1 1 1); }
-            offset    (0.5 0.5 0.5); // lattice offset / spacing (default)
+            // region { type sphere; centre (0 0 0); radius 0.1; }
+            // region { type cylinder; point1 (0 0 -1); point2 (0 0 1);
+            //          radius 0.1; }                        // a 2D disk
+            // region { type triSurfaceMesh; file "gate.stl"; }
+            //                         // closed, in constant/triSurface
+            // region                 // union | intersection | difference
+            // {                      // (difference: first minus the rest)
+            //     type    difference;
+            //     regions ( { type mesh; } { type box; min (..); max (..); } );
+            // }
+            // ...or any other closed searchable surface type
+        }
+
+        // Wall particles: 'patches' and 'layers' instead of 'region'
+        walls
+        {
+            spacing   0.001;         // the fluid's: the lattices line up
+            density   1000;
+            patches   (walls);       // patch names or regular expressions
+            layers    3;             // layers*spacing >= kernel support
         }
     }
     \endverbatim
+
+See also
+    Foam::meshless::seedLattice
+    Foam::meshless::seedRegion
+    Foam::meshless::wallLayers
 
 \*---------------------------------------------------------------------------*/
 
@@ -41,6 +74,9 @@ Usage
 #include "particleSet.H"
 #include "lagrangianIO.H"
 #include "dictionaryChecks.H"
+#include "seedLattice.H"
+#include "seedRegion.H"
+#include "wallLayers.H"
 #include <memory>
 #include <vector>
 
@@ -49,61 +85,72 @@ using namespace Foam::meshless;
 namespace
 {
 
-//- Bounding box of the region and a test of its cells
-struct seedRegion
+//- The lattice points of a region that lie in the mesh
+void seedInRegion
+(
+    const dictionary& dict,
+    const polyMesh& mesh,
+    const meshSearch& search,
+    const seedLattice& lattice,
+    DynamicList<point>& pts
+)
 {
-    boundBox bb;
-    label zoneID = -1;      // cellZone, or -1 for any cell
-    bool box = false;
-};
+    const autoPtr<seedRegion> region
+    (
+        seedRegion::New(dict.subDict("region"), mesh)
+    );
+
+    // The region's box clipped to the mesh
+    const boundBox& meshBb = mesh.bounds();
+    boundBox bb(region->bounds());
+    bb.min() = max(bb.min(), meshBb.min());
+    bb.max() = min(bb.max(), meshBb.max());
+
+    const tmp<pointField> tcandidates(lattice.points(bb));
+    const pointField& candidates = tcandidates();
+    labelList cells(candidates.size());
+    forAll(candidates, i)
+    {
+        cells[i] = search.findCell(candidates[i]);
+    }
+    boolList in;
+    region->inside(candidates, cells, in);
+
+    forAll(candidates, i)
+    {
+        if (cells[i] >= 0 && in[i]) pts.append(candidates[i]);
+    }
+}
 
 
-seedRegion readRegion(const dictionary& dict, const polyMesh& mesh)
+//- A body has either a region or wall patches
+void checkBodyKind(const word& body, const dictionary& dict)
 {
-    seedRegion r;
-    const word type(dict.get<word>("type"));
-    if (type == "mesh")
-    {
-        r.bb = mesh.bounds();
-    }
-    else if (type == "cellZone")
-    {
-        const word zone(dict.get<word>("zone"));
-        r.zoneID = mesh.cellZones().findZoneID(zone);
-        if (r.zoneID < 0)
-        {
-            FatalIOErrorInFunction(dict)
-                << "Entry 'zone': no cellZone " << zone << " in the mesh;"
-                << " expected one of " << mesh.cellZones().names()
-                << exit(FatalIOError);
-        }
-        r.bb = boundBox::invertedBox;
-        for (const label celli : mesh.cellZones()[r.zoneID])
-        {
-            for (const label pointi : mesh.cellPoints()[celli])
-            {
-                r.bb.add(mesh.points()[pointi]);
-            }
-        }
-    }
-    else if (type == "box")
-    {
-        r.bb = boundBox(dict.get<point>("min"), dict.get<point>("max"));
-        r.box = true;
-        if (r.bb.empty())
-        {
-            FatalIOErrorInFunction(dict)
-                << "Box " << r.bb << ": expected min < max in every direction"
-                << exit(FatalIOError);
-        }
-    }
-    else
+    const bool region = dict.found("region");
+    const bool walls = dict.found("patches");
+    if (region && walls)
     {
         FatalIOErrorInFunction(dict)
-            << "Entry 'type' is " << type
-            << ": expected one of (mesh cellZone box)" << exit(FatalIOError);
+            << "Body " << body << " has both 'region' and 'patches':"
+            << " expected either 'region' (particles in the mesh) or"
+            << " 'patches' with 'layers' (wall particles behind patches)"
+            << exit(FatalIOError);
     }
-    return r;
+    if (!region && !walls)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Body " << body << " has neither 'region' nor 'patches':"
+            << " expected 'region' (particles in the mesh) or 'patches'"
+            << " with 'layers' (wall particles behind patches)"
+            << exit(FatalIOError);
+    }
+    if (region && dict.found("layers"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Body " << body << ": entry 'layers' belongs to wall bodies:"
+            << " expected 'patches' instead of 'region' with it"
+            << exit(FatalIOError);
+    }
 }
 
 } // End anonymous namespace
@@ -178,52 +225,30 @@ int main(int argc, char *argv[])
         const scalar rho = readPositive(dict, "density");
         const vector offset =
             dict.getOrDefault<vector>("offset", vector(0.5, 0.5, 0.5));
-        const seedRegion region = readRegion(dict.subDict("region"), mesh);
-
-        // Lattice over the region's box, clipped to the mesh
-        boundBox bb(region.bb);
-        bb.min() = max(bb.min(), meshBb.min());
-        bb.max() = min(bb.max(), meshBb.max());
-
-        label n[3] = {1, 1, 1};
-        for (label d = 0; d < dim; ++d)
-        {
-            n[d] = label(std::floor((bb.max()[d] - bb.min()[d])/dx - offset[d]))
-                 + 1;
-            n[d] = std::max(n[d], label(0));
-        }
+        checkBodyKind(body, dict);
+        const seedLattice lattice(meshBb.min(), dx, offset, dim, zPlane);
 
         DynamicList<point> pts;
-        for (label k = 0; k < n[2]; ++k)
-        for (label j = 0; j < n[1]; ++j)
-        for (label i = 0; i < n[0]; ++i)
+        DynamicList<vector> normals;
+        DynamicList<scalar> distances;
+        autoPtr<wallLayers> walls;
+        if (dict.found("region"))
         {
-            point p
-            (
-                bb.min().x() + (i + offset.x())*dx,
-                bb.min().y() + (j + offset.y())*dx,
-                dim == 3 ? bb.min().z() + (k + offset.z())*dx : zPlane
-            );
-            if (region.box && !region.bb.contains(p)) continue;
-            const label celli = search.findCell(p);
-            if (celli < 0) continue;
-            if
-            (
-                region.zoneID >= 0
-             && mesh.cellZones().whichZone(celli) != region.zoneID
-            )
-            {
-                continue;
-            }
-            pts.append(p);
+            seedInRegion(dict, mesh, search, lattice, pts);
+        }
+        else
+        {
+            walls.reset(new wallLayers(dict, mesh));
+            walls->seed(lattice, search, pts, normals, distances);
         }
 
         if (pts.empty())
         {
             FatalIOErrorInFunction(dict)
-                << "Body " << body << ": its region yields no particle at"
-                << " spacing " << dx << " (region bounds " << region.bb
-                << ", mesh bounds " << meshBb << ")" << exit(FatalIOError);
+                << "Body " << body << ": "
+                << (walls ? "its patches yield" : "its region yields")
+                << " no particle at spacing " << dx
+                << " (mesh bounds " << meshBb << ")" << exit(FatalIOError);
         }
 
         sets.emplace_back(new particleSet(body, dim));
@@ -234,10 +259,22 @@ int main(int argc, char *argv[])
         {
             for (label d = 0; d < dim; ++d) x(i, d) = pts[i][d];
         }
-        const scalar V = dim == 2 ? dx*dx : dx*dx*dx;
+        const scalar V = lattice.cellVolume();
         set.addField("volume", particleField::kind::scalar).fill(V);
         set.addField("mass", particleField::kind::scalar).fill(rho*V);
         set.addField("rho", particleField::kind::scalar).fill(rho);
+        if (walls)
+        {
+            particleField& n =
+                set.addField("normal", particleField::kind::vector);
+            particleField& d =
+                set.addField("wallDistance", particleField::kind::scalar);
+            forAll(pts, i)
+            {
+                for (label c = 0; c < dim; ++c) n(i, c) = normals[i][c];
+                d(i, 0) = distances[i];
+            }
+        }
 
         boundBox pbb(pts, false);
         Info<< "Body " << body << nl
@@ -247,8 +284,16 @@ int main(int argc, char *argv[])
             << (dim == 2 ? " m^2 (per unit depth)" : " m^3") << nl
             << "    mass         " << rho*V*set.size()
             << (dim == 2 ? " kg/m" : " kg") << nl
-            << "    bounding box " << pbb << nl
-            << endl;
+            << "    bounding box " << pbb << nl;
+        if (walls)
+        {
+            const wordList patchNames(mesh.boundaryMesh().names());
+            Info<< "    wall layers  " << walls->nLayers() << " behind "
+                << wordList(patchNames, walls->patchIDs()) << nl
+                << "    distance     " << min(distances) << " .. "
+                << max(distances) << nl;
+        }
+        Info<< endl;
     }
 
     for (const auto& set : sets)

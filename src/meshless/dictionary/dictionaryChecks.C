@@ -53,6 +53,23 @@ Foam::scalar Foam::meshless::readInOpenRange
 }
 
 
+Foam::label Foam::meshless::readPositiveLabel
+(
+    const dictionary& dict,
+    const word& keyword
+)
+{
+    const label v = dict.get<label>(keyword);
+    if (v < 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << keyword << "' is " << v
+            << ": expected an integer > 0" << exit(FatalIOError);
+    }
+    return v;
+}
+
+
 Foam::label Foam::meshless::readLabelInRange
 (
     const dictionary& dict,
