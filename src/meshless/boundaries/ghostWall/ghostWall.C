@@ -5,6 +5,7 @@
 #include "ghostWall.H"
 #include "ulphOperators.H"
 #include "addToRunTimeSelectionTable.H"
+#include <algorithm>
 
 namespace Foam
 {
@@ -34,12 +35,14 @@ Foam::meshless::bodyModels::ghostWall::ghostWall
 :
     bodyModel(body, dict),
     slip_(slipTypeNames.get("slip", dict)),
+    minPressure_(dict.getOrDefault<scalar>("minPressure", -GREAT)),
     U_(body.particles().addField("U", particleField::kind::vector)),
     p_(body.particles().addField("p", particleField::kind::scalar)),
     rho_(body.particles().addField("rho", particleField::kind::scalar)),
     mass_(body.particles().addField("mass", particleField::kind::scalar)),
     V0_(body.requireField("volume", "model ghostWall")),
     Uvisc_(body.particles().addScratchField("Uvisc", particleField::kind::vector)),
+    Mwall_(body.particles().addScratchField("Mwall", particleField::kind::tensor)),
     Minv_(body.particles().addScratchField("Minv", particleField::kind::tensor)),
     S_(body.particles().addScratchField("S", particleField::kind::tensor)),
     prepared_(false)
@@ -60,23 +63,28 @@ void Foam::meshless::bodyModels::ghostWall::prepareImpl
     const smoothingKernel& W
 )
 {
+    using namespace ulphOperators;
     const particleSet& set = body_.particles();
     const double* x = set.positions().data();
+    const double* V0 = V0_.data();
     cellLinkedList cells(Dim, W.radius());
     cells.build(x, set.size());
     neighbourList own;
     own.build(cells, x, set.size(), true);
-    const std::vector<neighbourSource> sources{{&own, x, V0_.data()}};
-    const label nDegenerate = ulphOperators::shapeTensorInverse<Dim>
-    (
-        x, set.size(), sources, W, Minv_
-    );
-    if (nDegenerate)
+    double* Mw = Mwall_.data();
+
+    #pragma omp parallel for schedule(static)
+    for (label s = 0; s < set.size(); ++s)
     {
-        WarningInFunction
-            << "Wall " << body_.name() << ": " << nDegenerate
-            << " particles with a degenerate shape tensor (too few wall"
-            << " layers?); their pseudo-inverse is used" << endl;
+        const Eigen::Map<const vectorD<Dim>> xs(x + size_t(s)*Dim);
+        tensorD<Dim> M = tensorD<Dim>::Zero();
+        for (const label* jp = own.begin(s); jp != own.end(s); ++jp)
+        {
+            const vectorD<Dim> xsj =
+                Eigen::Map<const vectorD<Dim>>(x + size_t(*jp)*Dim) - xs;
+            M.noalias() += (W.W(xsj.norm())*V0[*jp])*(xsj*xsj.transpose());
+        }
+        Eigen::Map<tensorD<Dim>>(Mw + size_t(s)*Dim*Dim) = M;
     }
 }
 
@@ -98,6 +106,7 @@ void Foam::meshless::bodyModels::ghostWall::interpolateImpl
     const double* pF,
     const double* rhoF,
     const double* UF,
+    const double* VF,
     const smoothingKernel& W,
     const vector& g,
     const scalar c0,
@@ -119,7 +128,8 @@ void Foam::meshless::bodyModels::ghostWall::interpolateImpl
     const double* Uw = U_.data();
     double* Uv = Uvisc_.data();
     double* S = S_.data();
-    const double* Minv = Minv_.data();
+    double* Minv = Minv_.data();
+    const double* Mw = Mwall_.data();
 
     #pragma omp parallel for schedule(static)
     for (label s = 0; s < n; ++s)
@@ -128,6 +138,7 @@ void Foam::meshless::bodyModels::ghostWall::interpolateImpl
         double sumW = 0, sumWp = 0;
         vectorD<Dim> sumWrhoX = vectorD<Dim>::Zero();
         vectorD<Dim> sumWU = vectorD<Dim>::Zero();
+        tensorD<Dim> M = Eigen::Map<const tensorD<Dim>>(Mw + size_t(s)*Dim*Dim);
         for
         (
             const label* fp = wallToFluid.begin(s);
@@ -143,10 +154,16 @@ void Foam::meshless::bodyModels::ghostWall::interpolateImpl
             sumWp += w*pF[f];
             sumWrhoX += (w*rhoF[f])*xsf;
             sumWU += w*Eigen::Map<const vectorD<Dim>>(UF + size_t(f)*Dim);
+            M.noalias() += (w*VF[f])*(xsf*xsf.transpose());
         }
+        tensorD<Dim> inv;
+        invertShapeTensor<Dim>(M, inv);
+        Eigen::Map<tensorD<Dim>>(Minv + size_t(s)*Dim*Dim) = inv;
 
         // Fixed walls: no wall acceleration in eq. 52
-        const double ps = sumW > 0 ? (sumWp - gD.dot(sumWrhoX))/sumW : 0;
+        const double ps = sumW > 0
+            ? std::max((sumWp - gD.dot(sumWrhoX))/sumW, minPressure_)
+            : 0;
         const vectorD<Dim> uTilde =
             sumW > 0 ? vectorD<Dim>(sumWU/sumW) : vectorD<Dim>::Zero();
 
@@ -158,8 +175,7 @@ void Foam::meshless::bodyModels::ghostWall::interpolateImpl
         Eigen::Map<vectorD<Dim>>(Uv + size_t(s)*Dim) =
             noSlip ? vectorD<Dim>(2*uw - uTilde) : uTilde;
 
-        Eigen::Map<tensorD<Dim>>(S + size_t(s)*Dim*Dim) =
-            -ps*Eigen::Map<const tensorD<Dim>>(Minv + size_t(s)*Dim*Dim);
+        Eigen::Map<tensorD<Dim>>(S + size_t(s)*Dim*Dim) = -ps*inv;
     }
 }
 
@@ -171,6 +187,7 @@ void Foam::meshless::bodyModels::ghostWall::interpolate
     const double* pF,
     const double* rhoF,
     const double* UF,
+    const double* VF,
     const smoothingKernel& W,
     const vector& g,
     const scalar c0,
@@ -179,10 +196,10 @@ void Foam::meshless::bodyModels::ghostWall::interpolate
 {
     if (body_.dim() == 2)
     {
-        interpolateImpl<2>(wallToFluid, xF, pF, rhoF, UF, W, g, c0, rho0);
+        interpolateImpl<2>(wallToFluid, xF, pF, rhoF, UF, VF, W, g, c0, rho0);
     }
     else
     {
-        interpolateImpl<3>(wallToFluid, xF, pF, rhoF, UF, W, g, c0, rho0);
+        interpolateImpl<3>(wallToFluid, xF, pF, rhoF, UF, VF, W, g, c0, rho0);
     }
 }

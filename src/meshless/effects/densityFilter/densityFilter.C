@@ -42,7 +42,6 @@ void Foam::meshless::effects::densityFilter::correct
     if (timeIndex % interval_ != 0) return;
 
     const smoothingKernel& W = *ctx.W;
-    const neighbourSource& own = ctx.sources[0];
     const label dim = ctx.dim;
     const double W0 = W.W(0);
     filtered_.resize(ctx.n);
@@ -52,18 +51,25 @@ void Foam::meshless::effects::densityFilter::correct
     {
         double sumM = W0*ctx.mass[i];
         double sumV = W0*ctx.mass[i]/ctx.rho[i];
-        for (const label* jp = own.list->begin(i); jp != own.list->end(i); ++jp)
+        for (size_t k = 0; k < ctx.sources.size(); ++k)
         {
-            const label j = *jp;
-            double r2 = 0;
-            for (label d = 0; d < dim; ++d)
+            const neighbourSource& src = ctx.sources[k];
+            const double* m = ctx.massSrc[k];
+            for (const label* jp = src.list->begin(i); jp != src.list->end(i); ++jp)
             {
-                const double dx = own.x[j*dim + d] - ctx.x[i*dim + d];
-                r2 += dx*dx;
+                const label j = *jp;
+                double r2 = 0;
+                for (label d = 0; d < dim; ++d)
+                {
+                    const double dx = src.x[j*dim + d] - ctx.x[i*dim + d];
+                    r2 += dx*dx;
+                }
+                const double w = W.W(std::sqrt(r2));
+                // Own particles: V = m/rho now; walls: their volume
+                const double Vj = k == 0 ? m[j]/ctx.rho[j] : src.V[j];
+                sumM += w*m[j];
+                sumV += w*Vj;
             }
-            const double w = W.W(std::sqrt(r2));
-            sumM += w*ctx.mass[j];
-            sumV += w*ctx.mass[j]/ctx.rho[j];
         }
         filtered_[i] = sumM/sumV;
     }

@@ -293,7 +293,7 @@ void Foam::meshless::bodyModels::ulph::evaluate
     {
         walls_[k]->interpolate
         (
-            *fromWall_[k], x, p, rho, U_.data(), W, g_, c0_, rho0_
+            *fromWall_[k], x, p, rho, U_.data(), V, W, g_, c0_, rho0_
         );
     }
 

@@ -1,0 +1,75 @@
+#!/usr/bin/python3
+"""Case test: still water in a tank with the ULPH fluid (ulphPdFoam).
+
+Water 0.1 m deep in a 0.2 m wide 2D tank (dx = 5 mm, fixed ghost walls of
+4 layers, Gaussian kernel h = 1.2 dx, c0 = 20 m/s, hydrostatic start) for
+1 s. Checks against hydrostatics:
+- the bottom row's mean pressure is rho g (H - dx/2) within 1 %;
+- the RMS spurious speed is below 1e-3 sqrt(g H); the largest speed (free-
+  surface particles by the walls) below 3e-3 sqrt(g H);
+- no particle leaves the tank or is lost; no NaN (the solver would stop);
+- the log lists the fluid model, the walls and the named effects only.
+"""
+import math
+import os
+import shutil
+import sys
+
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.path.dirname(here), "lib"))
+from caseTest import CaseTest, copy_case, project_dir, run, scratch  # noqa
+sys.path.insert(0, os.path.join(project_dir, "etc", "python"))
+from foamCloud import read_cloud, times  # noqa: E402
+
+H, WIDTH, DX, G = 0.1, 0.2, 0.005, 9.81
+
+
+def main():
+    t = CaseTest("ulphStillWater")
+    work = scratch("ulphStillWater")
+    try:
+        case = copy_case(os.path.join(here, "ulphStillWater"),
+                         os.path.join(work, "case"))
+        for cmd in (["blockMesh"], ["seedParticles"], ["ulphPdFoam"]):
+            code, out = run(cmd, case)
+            t.check(cmd[0] + " succeeds", code == 0, out[-1500:])
+            if code != 0:
+                return t.finish()
+        for words in ("model ulph", "model ghostWall", "effect gravity",
+                      "effect artificialViscosity", "effect densityFilter",
+                      "water: neighbour search"):
+            t.check("log shows '%s'" % words, words in out)
+        t.check("no viscosity effect unless named",
+                "effect viscosity" not in out)
+
+        t_end, last = times(case)[-1]
+        t.check_close("ran to 1 s", t_end, 1.0, 1e-9)
+        c = read_cloud(case, last, "water")
+        x, U, p = c["positions"], c["U"], c["p"]
+        t.check_equal("no particle lost", len(x), 40 * 20)
+
+        bottom = [pi for pi, xi in zip(p, x) if xi[1] < DX]
+        expected = 1000 * G * (H - DX / 2)
+        t.check_close("bottom pressure vs rho g (H - dx/2)",
+                      sum(bottom) / len(bottom), expected, 0.01)
+
+        speeds = [math.hypot(u[0], u[1]) for u in U]
+        rms = math.sqrt(sum(s * s for s in speeds) / len(speeds))
+        scale = math.sqrt(G * H)
+        t.check("RMS spurious speed %.2e < 1e-3 sqrt(gH) = %.2e"
+                % (rms, 1e-3 * scale), rms < 1e-3 * scale)
+        t.check("max spurious speed %.2e < 3e-3 sqrt(gH) = %.2e"
+                % (max(speeds), 3e-3 * scale), max(speeds) < 3e-3 * scale)
+
+        inside = all(0 <= xi[0] <= WIDTH and xi[1] >= 0 for xi in x)
+        t.check("every particle inside the tank", inside)
+        top = max(xi[1] for xi in x)
+        t.check("free surface stays at H (top row %.4f m)" % top,
+                abs(top - (H - DX / 2)) < 0.2 * DX)
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+    return t.finish()
+
+
+if __name__ == "__main__":
+    sys.exit(main())
