@@ -68,3 +68,9 @@ def read_cloud(case, time, body):
     if "id" in out:
         out["id"] = [int(v) for v in out["id"]]
     return out
+
+
+def read_positions(case, time, body):
+    """Positions of a cloud ([x, y, z] each): always ascii, whatever the
+    case's writeFormat."""
+    return read_list(os.path.join(case, time, "lagrangian", body, "positions"))

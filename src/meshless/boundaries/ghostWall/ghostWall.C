@@ -42,6 +42,8 @@ Foam::meshless::bodyModels::ghostWall::ghostWall
     mass_(body.particles().addField("mass", particleField::kind::scalar)),
     V0_(body.requireField("volume", "model ghostWall")),
     Uvisc_(body.particles().addScratchField("Uvisc", particleField::kind::vector)),
+    Ucont_(body.particles().addScratchField("Ucont", particleField::kind::vector)),
+    normal_(body.requireField("normal", "model ghostWall")),
     Mwall_(body.particles().addScratchField("Mwall", particleField::kind::tensor)),
     Minv_(body.particles().addScratchField("Minv", particleField::kind::tensor)),
     S_(body.particles().addScratchField("S", particleField::kind::tensor)),
@@ -127,6 +129,8 @@ void Foam::meshless::bodyModels::ghostWall::interpolateImpl
     const double* V0 = V0_.data();
     const double* Uw = U_.data();
     double* Uv = Uvisc_.data();
+    double* Uc = Ucont_.data();
+    const double* nrm = normal_.data();
     double* S = S_.data();
     double* Minv = Minv_.data();
     const double* Mw = Mwall_.data();
@@ -172,8 +176,18 @@ void Foam::meshless::bodyModels::ghostWall::interpolateImpl
         m[s] = rho[s]*V0[s];
 
         const Eigen::Map<const vectorD<Dim>> uw(Uw + size_t(s)*Dim);
+        // Free slip mirrors only the normal velocity: the fluid slides
+        // along the wall without shear but cannot approach it unopposed
+        const Eigen::Map<const vectorD<Dim>> n(nrm + size_t(s)*Dim);
         Eigen::Map<vectorD<Dim>>(Uv + size_t(s)*Dim) =
-            noSlip ? vectorD<Dim>(2*uw - uTilde) : uTilde;
+            noSlip
+          ? vectorD<Dim>(2*uw - uTilde)
+          : vectorD<Dim>(uTilde - 2*uTilde.dot(n)*n + 2*uw.dot(n)*n);
+
+        Eigen::Map<vectorD<Dim>>(Uc + size_t(s)*Dim) =
+            noSlip
+          ? vectorD<Dim>(uw)
+          : vectorD<Dim>(uTilde - uTilde.dot(n)*n + uw.dot(n)*n);
 
         Eigen::Map<tensorD<Dim>>(S + size_t(s)*Dim*Dim) = -ps*inv;
     }

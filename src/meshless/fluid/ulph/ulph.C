@@ -260,7 +260,7 @@ void Foam::meshless::bodyModels::ulph::setContext()
         ctx_.Usrc[k + 1] = walls_[k]->Uvisc();
         ctx_.massSrc[k + 1] = walls_[k]->mass();
         Ssrc_[k + 1] = walls_[k]->S();
-        Ucont_[k + 1] = walls_[k]->U();
+        Ucont_[k + 1] = walls_[k]->Ucont();
     }
 }
 

@@ -1,0 +1,160 @@
+#!/usr/bin/python3
+"""Dam break: surge front x/H against T = t sqrt(g/H), compared with Martin
+and Moyce (1952) (validation/martinMoyce1952.dat).
+
+The front is the largest x of the water particles at each written time; the
+simulated curve is interpolated linearly at the reference times and the RMS
+of the differences, in units of H, is the error (target: below 0.05 H up to
+the last reference point, x = 3H, before the front reaches the far wall).
+Also checks that no particle has left the tank: the deepest penetration
+beyond the walls (x < 0, x > 4H, y < 0) must stay below half a spacing.
+
+Writes validation/result.md (the paper's spacing, 1 mm) or
+validation/result-dx<spacing>.md with the error, the run's cost (particles,
+steps, wall time from log.ulphPdFoam) and the plot front[-dx<spacing>].png.
+With --check, exits 1 when a target is missed (for benchmark suites).
+
+Usage: validate.py <case> [--check]
+"""
+import math
+import os
+import re
+import sys
+
+here = os.path.dirname(os.path.abspath(__file__))
+project = os.environ.get("MESHLESS_PROJECT",
+                         os.path.join(here, "..", "..", "..", ".."))
+sys.path.insert(0, os.path.join(project, "etc", "python"))
+from foamCloud import read_positions, times  # noqa: E402
+
+H = 0.057
+G = 9.81
+TARGET = 0.05
+
+
+def reference():
+    out = []
+    for line in open(os.path.join(here, "martinMoyce1952.dat")):
+        if line.strip() and not line.startswith("#"):
+            T, X = line.split()
+            out.append((float(T), float(X)))
+    return out
+
+
+def front_history(case):
+    """Front x/H against T, the particle count, and the deepest penetration
+    of any particle beyond the tank's walls at any written time [m]"""
+    T, X = [], []
+    depth = 0.0
+    for t, name in times(case):
+        x = read_positions(case, name, "water")
+        T.append(t * math.sqrt(G / H))
+        X.append(max(p[0] for p in x) / H)
+        for p in x:
+            depth = max(depth, -p[0], p[0] - 4 * H, -p[1])
+    return T, X, len(x), depth
+
+
+def interpolate(T, X, t):
+    for k in range(1, len(T)):
+        if T[k] >= t:
+            f = (t - T[k - 1]) / (T[k] - T[k - 1])
+            return X[k - 1] + f * (X[k] - X[k - 1])
+    return None
+
+
+def run_cost(case):
+    log = open(os.path.join(case, "log.ulphPdFoam")).read()
+    steps = len(re.findall(r"^Time = ", log, re.M))
+    clock = re.findall(r"ClockTime = ([0-9.]+) s", log)
+    rate = re.findall(r"Particle-steps per second: ([0-9.e+]+)", log)
+    nwall = re.search(r"walls: (\d+) particles", log)
+    spacing = re.search(r"water: \d+ particles, spacing ([0-9.e-]+)", log)
+    return {
+        "steps": steps,
+        "clock": float(clock[-1]) if clock else float("nan"),
+        "rate": float(rate[-1]) if rate else float("nan"),
+        "walls": int(nwall.group(1)) if nwall else 0,
+        "dx": float(spacing.group(1)) if spacing else float("nan"),
+    }
+
+
+def plot(T, X, ref, path):
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("matplotlib missing: no plot")
+        return
+    fig, ax = plt.subplots(figsize=(6, 4))
+    ax.plot(T, X, "-", label="ulphPdFoam")
+    ax.plot([r[0] for r in ref], [r[1] for r in ref], "o",
+            label="Martin & Moyce (1952)")
+    ax.set_xlabel(r"$t\sqrt{g/H}$")
+    ax.set_ylabel(r"$x_{front}/H$")
+    ax.set_xlim(0, max(T))
+    ax.grid(True, alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+
+
+def main(case, check):
+    ref = reference()
+    T, X, n, depth = front_history(case)
+    errors = []
+    for t, x in ref:
+        xs = interpolate(T, X, t)
+        if xs is not None:
+            errors.append((t, x, xs, xs - x))
+    rms = math.sqrt(sum(e[3] ** 2 for e in errors) / len(errors))
+    cost = run_cost(case)
+    contained = depth < 0.5 * cost["dx"]
+    ok = len(errors) == len(ref) and rms < TARGET and contained
+    paper = abs(cost["dx"] - 0.001) < 1e-9
+    suffix = "" if paper else "-dx%g" % cost["dx"]
+
+    lines = [
+        "# Dam break: surge front vs Martin & Moyce (1952)",
+        "",
+        "Command: `tutorials/ulphPdFoam/damBreak/Allrun%s`"
+        % ("" if abs(cost["dx"] - 0.001) < 1e-9 else " -dx %g" % cost["dx"]),
+        "",
+        "| spacing | water particles | wall particles | steps | wall time | "
+        "particle-steps/s | RMS front error (target < %.2f H) | "
+        "deepest wall penetration (target < dx/2) |" % TARGET,
+        "|---|---|---|---|---|---|---|---|",
+        "| %g m (H/dx = %.0f) | %d | %d | %d | %.0f s | %.3g | %.4f H: %s | "
+        "%.2f dx: %s |"
+        % (cost["dx"], H / cost["dx"], n, cost["walls"], cost["steps"],
+           cost["clock"], cost["rate"], rms,
+           "met" if rms < TARGET else "MISSED", depth / cost["dx"],
+           "met" if contained else "MISSED"),
+        "",
+        "Set-up: ULPH-NOSBPD paper 4.2, Table 2 (L = H = 0.057 m, tank 4H, "
+        "c0 = 40 m/s, alpha = 0.02, Gaussian kernel h = 1.2 dx, horizon 3h, "
+        "density filter every 20 steps), no-slip ghost walls of 4 layers, "
+        "hydrostatic start, adaptive step maxCo 0.25; 2 OpenMP threads.",
+        "",
+        "| T = t sqrt(g/H) | experiment x/H | ulphPdFoam x/H | difference |",
+        "|---|---|---|---|",
+    ]
+    for t, x, xs, e in errors:
+        lines.append("| %.3f | %.3f | %.3f | %+.3f |" % (t, x, xs, e))
+    lines += ["", "Plot: front%s.png. Reference figures: martinMoyce1952.dat."
+              % suffix]
+    open(os.path.join(here, "result%s.md" % suffix), "w").write(
+        "\n".join(lines) + "\n")
+    plot(T, X, ref, os.path.join(here, "front%s.png" % suffix))
+
+    print("\n".join(lines))
+    print("dam break front: RMS error %.4f H (target < %.2f H), deepest"
+          " penetration %.2f dx: %s"
+          % (rms, TARGET, depth / cost["dx"], "PASS" if ok else "FAIL"))
+    return 0 if ok or not check else 1
+
+
+if __name__ == "__main__":
+    args = [a for a in sys.argv[1:] if a != "--check"]
+    sys.exit(main(args[0] if args else ".", "--check" in sys.argv))
