@@ -17,6 +17,7 @@ import sys
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(here), "lib"))
 from caseTest import CaseTest, copy_case, project_dir, run, scratch  # noqa
+from readClouds import read_clouds  # noqa: E402
 
 TUTORIAL = os.path.join(project_dir, "tutorials/ulphPdFoam/damBreak")
 
@@ -39,6 +40,14 @@ def main():
         rows = re.findall(r"\| 1\.929 \| 3\.001 \| ([0-9.]+) \|", out)
         t.check("front at x = 3H by T = 1.93 (%s)" % rows,
                 bool(rows) and abs(float(rows[0]) - 3.0) < 0.3)
+        clouds = read_clouds(case, 0.2)
+        t.check_equal("reader sees water and walls", sorted(clouds),
+                      ["walls", "water"])
+        water = clouds.get("water", {"particles": 0, "arrays": {}})
+        t.check_equal("reader: water particles (binary output)",
+                      water["particles"], 29 * 29)
+        t.check("reader: water fields", {"U", "p", "rho", "mass", "id"}
+                <= set(water["arrays"]), str(sorted(water["arrays"])))
         log = open(os.path.join(case, "log.ulphPdFoam")).read()
         for words in ("Cost per model and effect", "water: densityFilter",
                       "water: artificialViscosity", "End"):

@@ -75,7 +75,8 @@ void Foam::meshless::effects::artificialViscosity::add
                 if (vx < 0)
                 {
                     const double pi = vx/(xij.squaredNorm() + eps2);
-                    s += (W.W(xij.norm())*pi*src.V[j])*xij;
+                    const double w = src.pairW(jp, xij.norm(), W);
+                    s += (w*pi*src.V[j])*xij;
                 }
             }
         }

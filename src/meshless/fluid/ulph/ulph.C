@@ -266,6 +266,38 @@ void Foam::meshless::bodyModels::ulph::setContext()
 
 
 template<int Dim>
+void Foam::meshless::bodyModels::ulph::cachePairKernels()
+{
+    const smoothingKernel& W = body_.kernel();
+    const double* x = ctx_.x;
+    pairW_.resize(ctx_.sources.size());
+
+    for (size_t k = 0; k < ctx_.sources.size(); ++k)
+    {
+        neighbourSource& s = ctx_.sources[k];
+        std::vector<double>& w = pairW_[k];
+        w.resize(s.list->nPairs());
+        const label* idx = s.list->indexData();
+
+        #pragma omp parallel for schedule(static)
+        for (label i = 0; i < ctx_.n; ++i)
+        {
+            for (label q = s.list->offset(i); q < s.list->offset(i + 1); ++q)
+            {
+                const double r2 = distanceSqr<Dim>
+                (
+                    s.x + size_t(idx[q])*Dim,
+                    x + size_t(i)*Dim
+                );
+                w[q] = W.W(std::sqrt(r2));
+            }
+        }
+        s.w = w.data();
+    }
+}
+
+
+template<int Dim>
 void Foam::meshless::bodyModels::ulph::evaluate
 (
     const scalar t,
@@ -298,6 +330,7 @@ void Foam::meshless::bodyModels::ulph::evaluate
     }
 
     setContext();
+    cachePairKernels<Dim>();
 
     nDegenerate_ = ulphOperators::shapeTensorInverse<Dim>
     (
