@@ -155,6 +155,13 @@ BAD = [
      "density     2500;",
      "density     2500; effects { gravity { value (0 -9.81 0); } }",
      ["floor", "fixed", "effects"]),
+    ("negative spacing", "constant/particleProperties",
+     "density     1000;", "density     1000; spacing -0.002;",
+     ["spacing", "-0.002", "> 0", "particleProperties"]),
+    ("unknown wall body", "constant/particleProperties",
+     "model       kinematic;", "model ulph; soundSpeed 20; walls (tonk);"
+     " kernel { type gaussian; smoothingLengthRatio 1.2; }",
+     ["tonk", "drop", "floor", "particleProperties"]),
     ("3D gravity in 2D", "constant/particleProperties", "(0 -9.81 0)",
      "(0 -9.81 1)", ["value", "z component"]),
     ("zero damping", "constant/particleProperties",

@@ -64,6 +64,9 @@ def interpolate(T, X, t):
 
 
 def run_cost(case):
+    props = open(os.path.join(case, "constant", "particleProperties")).read()
+    alpha = re.search(r"artificialViscosity\s*\{\s*alpha\s+([0-9.eE+-]+)",
+                      props)
     log = open(os.path.join(case, "log.ulphPdFoam")).read()
     steps = len(re.findall(r"^Time = ", log, re.M))
     clock = re.findall(r"ClockTime = ([0-9.]+) s", log)
@@ -76,6 +79,7 @@ def run_cost(case):
         "rate": float(rate[-1]) if rate else float("nan"),
         "walls": int(nwall.group(1)) if nwall else 0,
         "dx": float(spacing.group(1)) if spacing else float("nan"),
+        "alpha": alpha.group(1) if alpha else "none",
     }
 
 
@@ -133,9 +137,10 @@ def main(case, check):
            "met" if contained else "MISSED"),
         "",
         "Set-up: ULPH-NOSBPD paper 4.2, Table 2 (L = H = 0.057 m, tank 4H, "
-        "c0 = 40 m/s, alpha = 0.02, Gaussian kernel h = 1.2 dx, horizon 3h, "
-        "density filter every 20 steps), no-slip ghost walls of 4 layers, "
-        "hydrostatic start, adaptive step maxCo 0.25; 2 OpenMP threads.",
+        "c0 = 40 m/s, Gaussian kernel h = 1.2 dx, horizon 3h, density "
+        "filter every 20 steps), artificial viscosity alpha = %s (paper: "
+        "0.02), no-slip ghost walls of 4 layers, hydrostatic start, "
+        "adaptive step maxCo 0.25; 2 OpenMP threads." % cost["alpha"],
         "",
         "| T = t sqrt(g/H) | experiment x/H | ulphPdFoam x/H | difference |",
         "|---|---|---|---|",
