@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "ghostWall.H"
+#include "particleScene.H"
 #include "ulphOperators.H"
 #include "addToRunTimeSelectionTable.H"
 #include <algorithm>
@@ -47,7 +48,15 @@ Foam::meshless::bodyModels::ghostWall::ghostWall
     Mwall_(body.particles().addScratchField("Mwall", particleField::kind::tensor)),
     Minv_(body.particles().addScratchField("Minv", particleField::kind::tensor)),
     S_(body.particles().addScratchField("S", particleField::kind::tensor)),
-    prepared_(false)
+    prepared_(false),
+    motionTime_(),
+    motion_(),
+    x0_(nullptr),
+    n0_(nullptr),
+    acc_(nullptr),
+    R_(tensor::I),
+    movedTo_(-GREAT),
+    zPlane_(0)
 {
     if (dict.found("effects"))
     {
@@ -56,6 +65,97 @@ Foam::meshless::bodyModels::ghostWall::ghostWall
             << " particles never move, so effects do not apply; remove"
             << " 'effects'" << exit(FatalIOError);
     }
+}
+
+
+void Foam::meshless::bodyModels::ghostWall::connect(particleScene& scene)
+{
+    if (!dict_.found("motion")) return;
+
+    const Time& runTime = scene.time();
+    motionTime_ = Time::New(runTime.path());
+    motion_ = solidBodyMotionFunction::New(dict_.subDict("motion"), *motionTime_);
+    zPlane_ = scene.zPlane();
+
+    particleSet& set = body_.particles();
+    x0_ = &set.addScratchField("x0", particleField::kind::vector);
+    n0_ = &set.addScratchField("n0", particleField::kind::vector);
+    acc_ = &set.addScratchField("acceleration", particleField::kind::vector);
+
+    // The cloud holds the positions at the start time (moved, on restart):
+    // back to the motion's reference frame
+    const septernion T = transformationAt(runTime.value());
+    const label dim = set.dim();
+    const particleField& x = set.positions();
+    for (label i = 0; i < set.size(); ++i)
+    {
+        vector p(Zero), n(Zero);
+        p.z() = zPlane_;
+        for (label d = 0; d < dim; ++d)
+        {
+            p[d] = x(i, d);
+            n[d] = normal_(i, d);
+        }
+        const vector p0 = T.invTransformPoint(p);
+        const vector n0 = T.r().invTransform(n);
+        for (label d = 0; d < dim; ++d)
+        {
+            (*x0_)(i, d) = p0[d];
+            (*n0_)(i, d) = n0[d];
+        }
+    }
+    moveTo(runTime.value());
+}
+
+
+Foam::septernion Foam::meshless::bodyModels::ghostWall::transformationAt
+(
+    const scalar t
+)
+{
+    motionTime_->setTime(t, 0);
+    return motion_->transformation();
+}
+
+
+void Foam::meshless::bodyModels::ghostWall::moveTo(const scalar t)
+{
+    if (!motion_.valid() || t == movedTo_) return;
+
+    // Central differences of the rigid transformation
+    const scalar d = 1e-4;
+    const septernion Tm = transformationAt(t - d);
+    const septernion T0 = transformationAt(t);
+    const septernion Tp = transformationAt(t + d);
+
+    particleSet& set = body_.particles();
+    const label dim = set.dim();
+    particleField& x = set.positions();
+    particleField& n = normal_;
+
+    for (label i = 0; i < set.size(); ++i)
+    {
+        vector p0(Zero), n0(Zero);
+        p0.z() = zPlane_;
+        for (label c = 0; c < dim; ++c)
+        {
+            p0[c] = (*x0_)(i, c);
+            n0[c] = (*n0_)(i, c);
+        }
+        const vector xm = Tm.transformPoint(p0);
+        const vector xc = T0.transformPoint(p0);
+        const vector xp = Tp.transformPoint(p0);
+        const vector nc = T0.r().transform(n0);
+        for (label c = 0; c < dim; ++c)
+        {
+            x(i, c) = xc[c];
+            n(i, c) = nc[c];
+            U_(i, c) = (xp[c] - xm[c])/(2*d);
+            (*acc_)(i, c) = (xp[c] - 2*xc[c] + xm[c])/(d*d);
+        }
+    }
+    R_ = T0.r().R();
+    movedTo_ = t;
 }
 
 
@@ -134,6 +234,10 @@ void Foam::meshless::bodyModels::ghostWall::interpolateImpl
     double* S = S_.data();
     double* Minv = Minv_.data();
     const double* Mw = Mwall_.data();
+    const double* acc = acc_ ? acc_->data() : nullptr;
+    tensorD<Dim> Rd;
+    for (int a = 0; a < Dim; ++a)
+        for (int b = 0; b < Dim; ++b) Rd(a, b) = R_(a, b);
 
     #pragma omp parallel for schedule(static)
     for (label s = 0; s < n; ++s)
@@ -143,6 +247,10 @@ void Foam::meshless::bodyModels::ghostWall::interpolateImpl
         vectorD<Dim> sumWrhoX = vectorD<Dim>::Zero();
         vectorD<Dim> sumWU = vectorD<Dim>::Zero();
         tensorD<Dim> M = Eigen::Map<const tensorD<Dim>>(Mw + size_t(s)*Dim*Dim);
+        if (acc)
+        {
+            M = Rd*M*Rd.transpose();
+        }
         for
         (
             const label* fp = wallToFluid.begin(s);
@@ -164,9 +272,14 @@ void Foam::meshless::bodyModels::ghostWall::interpolateImpl
         invertShapeTensor<Dim>(M, inv);
         Eigen::Map<tensorD<Dim>>(Minv + size_t(s)*Dim*Dim) = inv;
 
-        // Fixed walls: no wall acceleration in eq. 52
+        // Eq. 52: gravity less the wall's acceleration
+        vectorD<Dim> gEff = gD;
+        if (acc)
+        {
+            gEff -= Eigen::Map<const vectorD<Dim>>(acc + size_t(s)*Dim);
+        }
         const double ps = sumW > 0
-            ? std::max((sumWp - gD.dot(sumWrhoX))/sumW, minPressure_)
+            ? std::max((sumWp - gEff.dot(sumWrhoX))/sumW, minPressure_)
             : 0;
         const vectorD<Dim> uTilde =
             sumW > 0 ? vectorD<Dim>(sumWU/sumW) : vectorD<Dim>::Zero();

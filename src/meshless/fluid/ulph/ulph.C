@@ -214,6 +214,10 @@ void Foam::meshless::bodyModels::ulph::buildNeighbours()
     for (size_t k = 0; k < walls_.size(); ++k)
     {
         const particleSet& ws = wallBodies_[k]->particles();
+        if (walls_[k]->moving())
+        {
+            wallCells_[k]->build(ws.positions().data(), ws.size());
+        }
         toWall_[k]->build(*wallCells_[k], x, set.size(), false);
         fromWall_[k]->build
         (
@@ -313,6 +317,8 @@ void Foam::meshless::bodyModels::ulph::evaluate
     double* p = p_.data();
     double* V = V_.data();
     const double* m = mass_.data();
+
+    for (ghostWall* wall : walls_) wall->moveTo(t);
 
     #pragma omp parallel for schedule(static)
     for (label i = 0; i < n; ++i)
@@ -417,6 +423,7 @@ void Foam::meshless::bodyModels::ulph::advance
     costAccounting& costs
 )
 {
+    for (ghostWall* wall : walls_) wall->moveTo(t);
     {
         costAccounting::scope timer(costs, neighbourCost_);
         buildNeighbours();
@@ -459,6 +466,9 @@ void Foam::meshless::bodyModels::ulph::advance
         U[k] = U0[k] + dt*dU[k];
         x[k] = x0[k] + dt*U[k];
     }
+
+    // Walls at the end of the step, as written
+    for (ghostWall* wall : walls_) wall->moveTo(t + dt);
 
     setContext();
     body_.correctEffects(ctx_, time_->timeIndex(), costs);
