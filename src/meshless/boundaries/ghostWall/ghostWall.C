@@ -105,6 +105,29 @@ void Foam::meshless::bodyModels::ghostWall::connect(particleScene& scene)
         }
     }
     moveTo(runTime.value());
+
+    // Shape tensors computed before the motion was known (the fluid may
+    // connect first) were taken in the start frame: back to the reference
+    if (prepared_) toReferenceFrame(Mwall_, R_);
+}
+
+
+void Foam::meshless::bodyModels::ghostWall::toReferenceFrame
+(
+    particleField& M,
+    const tensor& R
+)
+{
+    const label dim = body_.dim();
+    for (label i = 0; i < M.size(); ++i)
+    {
+        tensor Mi(Zero);
+        for (label a = 0; a < dim; ++a)
+            for (label b = 0; b < dim; ++b) Mi(a, b) = M(i, a*dim + b);
+        const tensor Mr = R.T() & Mi & R;
+        for (label a = 0; a < dim; ++a)
+            for (label b = 0; b < dim; ++b) M(i, a*dim + b) = Mr(a, b);
+    }
 }
 
 
@@ -196,6 +219,10 @@ void Foam::meshless::bodyModels::ghostWall::prepare(const smoothingKernel& W)
     if (prepared_) return;
     if (body_.dim() == 2) prepareImpl<2>(W);
     else prepareImpl<3>(W);
+
+    // Kept in the motion's reference frame (R_ is the identity until the
+    // motion is set up, see connect)
+    toReferenceFrame(Mwall_, R_);
     prepared_ = true;
 }
 
