@@ -104,7 +104,7 @@ void expectExact(const cloud& c, const double dx, const std::string& what)
     std::vector<double> grad(c.x.size());
     ulphOperators::gradient<Dim>
     (
-        c.x.data(), c.size(), sources, *W, Minv, f.data(), {f.data()},
+        c.x.data(), c.size(), sources, *W, Minv.data(), f.data(), {f.data()},
         grad.data()
     );
 
@@ -116,12 +116,12 @@ void expectExact(const cloud& c, const double dx, const std::string& what)
     std::vector<double> gradU(c.size()*Dim*Dim), divU(c.size());
     ulphOperators::vectorGradient<Dim>
     (
-        c.x.data(), c.size(), sources, *W, Minv, u.data(), {u.data()},
+        c.x.data(), c.size(), sources, *W, Minv.data(), u.data(), {u.data()},
         gradU.data()
     );
     ulphOperators::divergence<Dim>
     (
-        c.x.data(), c.size(), sources, *W, Minv, u.data(), {u.data()},
+        c.x.data(), c.size(), sources, *W, Minv.data(), u.data(), {u.data()},
         divU.data()
     );
     double trace = 0;
@@ -211,7 +211,7 @@ TEST(ulphOperators, neighboursFromTwoBodies)
     std::vector<double> grad(fluid.x.size());
     ulphOperators::gradient<2>
     (
-        fluid.x.data(), fluid.size(), both, *W, Minv, fF.data(),
+        fluid.x.data(), fluid.size(), both, *W, Minv.data(), fF.data(),
         {fF.data(), fW.data()}, grad.data()
     );
     for (label i = 0; i < fluid.size(); ++i)
@@ -256,7 +256,7 @@ TEST(ulphOperators, degenerateShapeTensorsFallBackWithoutNaN)
     std::vector<double> grad(c.x.size());
     ulphOperators::gradient<2>
     (
-        c.x.data(), c.size(), sources, *W, Minv, f.data(), {f.data()},
+        c.x.data(), c.size(), sources, *W, Minv.data(), f.data(), {f.data()},
         grad.data()
     );
     for (label i = 0; i < 10; ++i)

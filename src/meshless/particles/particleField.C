@@ -4,6 +4,8 @@
 
 #include "particleField.H"
 #include "error.H"
+#include <algorithm>
+#include <cmath>
 
 const Foam::Enum<Foam::meshless::particleField::kind>
 Foam::meshless::particleField::kindNames
@@ -55,6 +57,24 @@ void Foam::meshless::particleField::resize(const label n)
 void Foam::meshless::particleField::fill(const double v)
 {
     std::fill(data_.begin(), data_.end(), v);
+}
+
+
+double Foam::meshless::particleField::maxMagnitude() const
+{
+    const label n = size();
+    const label nc = nCmpt_;
+    const double* v = data_.data();
+    double max2 = 0;
+
+    #pragma omp parallel for reduction(max:max2)
+    for (label i = 0; i < n; ++i)
+    {
+        double m2 = 0;
+        for (label c = 0; c < nc; ++c) m2 += v[i*nc + c]*v[i*nc + c];
+        max2 = std::max(max2, m2);
+    }
+    return std::sqrt(max2);
 }
 
 

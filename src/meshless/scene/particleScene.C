@@ -99,16 +99,7 @@ Foam::meshless::particleBody& Foam::meshless::particleScene::body
 Foam::meshless::particleBody&
 Foam::meshless::particleScene::body(const word& name)
 {
-    for (particleBody& b : bodies_)
-    {
-        if (b.name() == name) return b;
-    }
-    wordList names(bodies_.size());
-    forAll(bodies_, i) names[i] = bodies_[i].name();
-    FatalIOErrorInFunction(dict_)
-        << "Unknown body '" << name << "': expected one of " << names
-        << exit(FatalIOError);
-    return bodies_[0];
+    return body(name, dict_);
 }
 
 

@@ -141,16 +141,8 @@ void Foam::meshless::bodyModels::ulph::connect(particleScene& scene)
     const scalar gMag = mag(g_);
     if (gMag > 0)
     {
-        const vector up = -g_/gMag;
-        scalar lo = GREAT, hi = -GREAT;
-        const particleField& x = body_.particles().positions();
-        for (label i = 0; i < x.size(); ++i)
-        {
-            scalar s = 0;
-            for (label d = 0; d < dim; ++d) s += up[d]*x(i, d);
-            lo = min(lo, s);
-            hi = max(hi, s);
-        }
+        scalar lo, hi;
+        heightRange(lo, hi);
         const scalar H = hi - lo + body_.spacing();
         const scalar c0min = 10*std::sqrt(2*gMag*H);
         if (c0_ < c0min)
@@ -180,25 +172,38 @@ void Foam::meshless::bodyModels::ulph::connect(particleScene& scene)
 }
 
 
-void Foam::meshless::bodyModels::ulph::hydrostaticStart()
+Foam::scalar Foam::meshless::bodyModels::ulph::height(const label i) const
 {
-    const label dim = body_.dim();
     const vector up = -g_/mag(g_);
     const particleField& x = body_.particles().positions();
-    scalar top = -GREAT;
-    for (label i = 0; i < x.size(); ++i)
+    scalar s = 0;
+    for (label d = 0; d < body_.dim(); ++d) s += up[d]*x(i, d);
+    return s;
+}
+
+
+void Foam::meshless::bodyModels::ulph::heightRange(scalar& lo, scalar& hi) const
+{
+    lo = GREAT;
+    hi = -GREAT;
+    for (label i = 0; i < body_.particles().size(); ++i)
     {
-        scalar s = 0;
-        for (label d = 0; d < dim; ++d) s += up[d]*x(i, d);
-        top = max(top, s);
+        lo = min(lo, height(i));
+        hi = max(hi, height(i));
     }
+}
+
+
+void Foam::meshless::bodyModels::ulph::hydrostaticStart()
+{
+    scalar lo, top;
+    heightRange(lo, top);
     top += 0.5*body_.spacing();
+    const particleField& x = body_.particles().positions();
 
     for (label i = 0; i < x.size(); ++i)
     {
-        scalar s = 0;
-        for (label d = 0; d < dim; ++d) s += up[d]*x(i, d);
-        const scalar p = rho0_*mag(g_)*(top - s);
+        const scalar p = rho0_*mag(g_)*(top - height(i));
         rho_(i, 0) = ulphEquations::taitDensity(p, rho0_, c0_, gamma_);
         mass_(i, 0) = rho_(i, 0)*V0_(i, 0);
     }
@@ -388,29 +393,12 @@ Foam::scalar Foam::meshless::bodyModels::ulph::maxDeltaT
     const scalar maxCo
 ) const
 {
-    const label n = U_.size();
-    const label dim = U_.nComponents();
-    const double* U = U_.data();
-    const double* a = dU_.data();
-    double maxU2 = 0, maxA2 = 0;
-
-    #pragma omp parallel for reduction(max:maxU2, maxA2)
-    for (label i = 0; i < n; ++i)
-    {
-        double u2 = 0, a2 = 0;
-        for (label d = 0; d < dim; ++d)
-        {
-            u2 += U[i*dim + d]*U[i*dim + d];
-            a2 += a[i*dim + d]*a[i*dim + d];
-        }
-        maxU2 = std::max(maxU2, u2);
-        maxA2 = std::max(maxA2, a2);
-    }
     const scalar h = body_.kernel().h();
-    scalar dt = maxCo*h/(c0_ + std::sqrt(maxU2));
-    if (maxA2 > 0)
+    const scalar maxA = dU_.maxMagnitude();
+    scalar dt = maxCo*h/(c0_ + U_.maxMagnitude());
+    if (maxA > 0)
     {
-        dt = min(dt, 0.25*std::sqrt(h/std::sqrt(maxA2)));
+        dt = min(dt, 0.25*std::sqrt(h/maxA));
     }
     return dt;
 }

@@ -4,7 +4,6 @@
 
 #include "kinematic.H"
 #include "addToRunTimeSelectionTable.H"
-#include <cmath>
 
 namespace Foam
 {
@@ -36,19 +35,8 @@ Foam::scalar Foam::meshless::bodyModels::kinematic::maxDeltaT
     const scalar maxCo
 ) const
 {
-    const label np = U_.size();
-    const label dim = U_.nComponents();
-    const double* U = U_.data();
-    double maxU2 = 0;
-
-    #pragma omp parallel for reduction(max:maxU2)
-    for (label i = 0; i < np; ++i)
-    {
-        double u2 = 0;
-        for (label d = 0; d < dim; ++d) u2 += U[i*dim + d]*U[i*dim + d];
-        maxU2 = std::max(maxU2, u2);
-    }
-    return maxU2 > 0 ? maxCo*body_.spacing()/std::sqrt(maxU2) : GREAT;
+    const scalar maxU = U_.maxMagnitude();
+    return maxU > 0 ? maxCo*body_.spacing()/maxU : GREAT;
 }
 
 
