@@ -39,3 +39,38 @@ def run_cost(log_file):
         "rate": float(rate[-1]) if rate else float("nan"),
         "particles": int(particles[-1]) if particles else 0,
     }
+
+
+def dictionary_entry(case, key, dictionary="constant/particleProperties"):
+    """An entry of a case dictionary ('/'-scoped key, e.g. bodies/beam/density)
+    with its $variables and #eval expanded, read through foamDictionary"""
+    import subprocess
+    out = subprocess.run(
+        ["foamDictionary", "-entry", key, "-value",
+         os.path.join(case, dictionary)],
+        check=True, capture_output=True, text=True).stdout
+    return out.strip()
+
+
+def save_run(folder, name, run):
+    """One run's figures as 'key value' lines in <folder>/<name>.txt"""
+    os.makedirs(folder, exist_ok=True)
+    with open(os.path.join(folder, name + ".txt"), "w") as f:
+        for k, v in run.items():
+            f.write("%s %s\n" % (k, v))
+
+
+def load_runs(folder):
+    """Every run saved in folder, numbers as floats"""
+    runs = []
+    for name in sorted(os.listdir(folder)) if os.path.isdir(folder) else []:
+        run = {}
+        for line in open(os.path.join(folder, name)):
+            k, v = line.split(None, 1)
+            v = v.strip()
+            try:
+                run[k] = float(v)
+            except ValueError:
+                run[k] = v
+        runs.append(run)
+    return runs

@@ -349,7 +349,7 @@ Foam::meshless::bodyModels::tlsph::tlsph
     {
         FatalIOErrorInFunction(dict)
             << "hourglassControl " << hourglass_ << ": expected a coefficient"
-            << " >= 0 (0: off; Ganzenmueller 2015 uses 10 to 50)"
+            << " >= 0 (0: off; the tutorials use 10)"
             << exit(FatalIOError);
     }
 
@@ -483,6 +483,23 @@ Foam::scalar Foam::meshless::bodyModels::tlsph::strainEnergy() const
             for (label j = 0; j < dim; ++j) Fa[3*i + j] = F_(a, i*dim + j);
         }
         W += V0_(a, 0)*law_->energyDensity(a, Fa);
+    }
+
+    // The hourglass control's springs store energy too
+    if (hourglass_ > 0)
+    {
+        const double c = 0.5*hourglass_*law_->elastic().E();
+        const double* x = body_.particles().positions().data();
+        W +=
+            dim == 2
+          ? tlsphOperators::hourglassEnergy<2>
+            (
+                pairs_, Wab_.data(), V0_.data(), X0_.data(), x, F_.data(), c
+            )
+          : tlsphOperators::hourglassEnergy<3>
+            (
+                pairs_, Wab_.data(), V0_.data(), X0_.data(), x, F_.data(), c
+            );
     }
     return W;
 }

@@ -27,14 +27,16 @@ Usage: validate.py <case> [--check]
 """
 import math
 import os
-import subprocess
 import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
-from foamMonitor import read_monitor, run_cost  # noqa: E402
+from foamMonitor import (read_monitor, run_cost, dictionary_entry,  # noqa
+                         save_run, load_runs)
+
+entry = dictionary_entry
 
 L = 0.2
 THICK = 0.02
@@ -46,19 +48,11 @@ PAPER = {40: (74.10, 0.119), 20: (74.80, 0.120), 10: (77.50, 0.123)}
 TARGET = {20: (0.01, 0.02)}
 
 
-def entry(case, key):
-    out = subprocess.run(
-        ["foamDictionary", "-expand", "-entry", key, "-value",
-         os.path.join(case, "constant", "particleProperties")],
-        check=True, capture_output=True, text=True).stdout
-    return out.strip()
-
-
 def theory(case):
-    prefix = "bodies.plate.constitutiveLaw."
+    prefix = "bodies/plate/constitutiveLaw/"
     K = float(entry(case, prefix + "K"))
     nu = float(entry(case, prefix + "nu"))
-    rho = float(entry(case, "bodies.plate.density"))
+    rho = float(entry(case, "bodies/plate/density"))
     E = 3 * K * (1 - 2 * nu)
     Ep = E / (1 - nu**2)
     k = KL / L
@@ -106,7 +100,7 @@ def analyse(case):
     dx = spacing(case)
     cost = run_cost(os.path.join(case, "log.isphTlsphFoam"))
     return {
-        "TdX": round(THICK / dx), "dx": dx,
+        "TdX": round(THICK / dx), "dx": dx, "hourglass": hourglass(case),
         "period": period * th["c0"] / L, "amplitude": amplitude / L,
         "periodTheory": th["period"] * th["c0"] / L,
         "amplitudeTheory": th["amplitude"] / L,
@@ -118,38 +112,24 @@ def analyse(case):
 
 
 def spacing(case):
-    res = os.path.join(case, "system", "resolution")
-    if os.path.exists(res):
-        return float(open(res).read().split()[1].rstrip(";"))
-    out = subprocess.run(
-        ["foamDictionary", "-entry", "dx", "-value",
-         os.path.join(case, "system", "seedParticlesDict")],
-        check=True, capture_output=True, text=True).stdout
-    return float(out.strip())
+    return float(entry(case, "dx", "system/seedParticlesDict"))
+
+
+def hourglass(case):
+    return float(entry(case, "hourglass"))
 
 
 def save(run):
-    os.makedirs(os.path.join(here, "runs"), exist_ok=True)
-    with open(os.path.join(here, "runs", "dx%g.txt" % run["dx"]), "w") as f:
-        for k, v in run.items():
-            f.write("%s %s\n" % (k, v))
+    save_run(os.path.join(here, "runs"),
+             "dx%g-hourglass%g" % (run["dx"], run["hourglass"]), run)
 
 
-def load_runs():
-    runs = []
-    folder = os.path.join(here, "runs")
-    for name in sorted(os.listdir(folder)) if os.path.isdir(folder) else []:
-        run = {}
-        for line in open(os.path.join(folder, name)):
-            k, v = line.split(None, 1)
-            v = v.strip()
-            try:
-                run[k] = float(v) if k != "threads" else v
-            except ValueError:
-                run[k] = v
-        run["TdX"] = int(run["TdX"])
-        runs.append(run)
-    return sorted(runs, key=lambda r: -r["TdX"])
+def runs_present():
+    runs = load_runs(os.path.join(here, "runs"))
+    for r in runs:
+        r["TdX"] = int(r["TdX"])
+        r["threads"] = str(r["threads"]).replace(".0", "")
+    return sorted(runs, key=lambda r: (-r["hourglass"], -r["TdX"]))
 
 
 def errors(run):
@@ -166,24 +146,25 @@ def write_table(runs):
         "<spacing>` (T/dx = 0.02/spacing), one line per run present in "
         "validation/runs/.",
         "",
-        "| method | T/dx | period t c0/L | error | A/L | error | particles "
-        "| steps | wall time | particle-steps/s | threads |",
-        "|---|---|---|---|---|---|---|---|---|---|---|",
-        "| plate theory | - | %.2f | - | %.4f | - | | | | | |"
+        "| method | hourglass control | T/dx | period t c0/L | error | A/L "
+        "| error | particles | steps | wall time | particle-steps/s "
+        "| threads |",
+        "|---|---|---|---|---|---|---|---|---|---|---|---|",
+        "| plate theory | | - | %.2f | - | %.4f | - | | | | | |"
         % (th["periodTheory"], th["amplitudeTheory"]),
     ]
     for r in runs:
         ep, ea = errors(r)
         lines.append(
-            "| isphTlsphFoam | %d | %.2f | %+.2f %% | %.4f | %+.2f %% | %d "
-            "| %d | %.0f s | %.3g | %s |"
-            % (r["TdX"], r["period"], 100 * ep, r["amplitude"], 100 * ea,
+            "| isphTlsphFoam | %g | %d | %.2f | %+.2f %% | %.4f | %+.2f %% "
+            "| %d | %d | %.0f s | %.3g | %s |"
+            % (r["hourglass"], r["TdX"], r["period"], 100 * ep, r["amplitude"], 100 * ea,
                r["particles"], r["steps"], r["wall"], r["rate"],
                r["threads"]))
     for n in sorted(PAPER, reverse=True):
         p, a = PAPER[n]
         lines.append(
-            "| paper's TLSPH (Table 3) | %d | %.2f | %+.2f %% | %.3f | "
+            "| paper's TLSPH (Table 3) | | %d | %.2f | %+.2f %% | %.3f | "
             "%+.2f %% | | | | | |"
             % (n, p, 100 * (p / th["periodTheory"] - 1), a,
                100 * (a / th["amplitudeTheory"] - 1)))
@@ -194,7 +175,10 @@ def write_table(runs):
         "Set-up: ISPH-TLSPH paper 3.1 (L = 0.2 m, T = 0.02 m, rho = 1000, "
         "K = 3.25 MPa, nu = 0.3975, plane strain, kL = 1.875, V0 = 0.01), "
         "cubic spline kernel h = 1.2 dx, RK4, linearElastic with finite "
-        "kinematics, clamp 0.01 m long behind x = 0. Plot: tip.png.",
+        "kinematics, clamp 0.01 m long behind x = 0; hourglass control "
+        "(Ganzenmueller 2015) coefficient as in its column. The tip "
+        "displacement is interpolated at (0.2, 0) by moving least squares. "
+        "Plot: tip.png (the finest run with hourglass control).",
     ]
     with open(os.path.join(here, "result.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
@@ -235,7 +219,7 @@ def main():
     check = "--check" in sys.argv
     run = analyse(case)
     save(run)
-    write_table(load_runs())
+    write_table(runs_present())
     plot(case, run)
     ep, ea = errors(run)
     n = run["TdX"]
