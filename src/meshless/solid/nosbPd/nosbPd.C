@@ -33,6 +33,7 @@ Foam::meshless::bodyModels::nosbPd::nosbPd
     bodyModel(body, dict),
     rho0_(body.density()),
     Gs_(dict.get<scalar>("hourglassCoefficient")),
+    order_(dict.found("order") ? readLabelInRange(dict, "order", 1, 2) : 1),
     s0_(0),
     C_(0),
     U_(body.particles().addField("U", particleField::kind::vector)),
@@ -60,8 +61,7 @@ Foam::meshless::bodyModels::nosbPd::nosbPd
     acc_(body.particles().addScratchField("acc", particleField::kind::vector)),
     F_(body.particles().addScratchField("F", particleField::kind::tensor)),
     Fold_(body.particles().addScratchField("Fold", particleField::kind::tensor)),
-    Kinv_(body.particles().addScratchField("Kinv", particleField::kind::tensor)),
-    PK_(body.particles().addScratchField("PKinv", particleField::kind::tensor)),
+    P_(body.particles().addScratchField("P", particleField::kind::tensor)),
     m_(body.particles().addScratchField("weightedVolume", particleField::kind::scalar)),
     Ws_(body.particles().addScratchField("Ws", particleField::kind::scalar)),
     resolved_(body.particles().size(), 1),
@@ -78,6 +78,7 @@ Foam::meshless::bodyModels::nosbPd::nosbPd
     C_ = Gs_*law_->waveModulus();
 
     families_.reset(new peridynamicFamilies(X0_, V0_, body.kernel()));
+    g_.resize(families_->nBonds()*body.dim());
     readFailure();
 }
 
@@ -118,9 +119,10 @@ void Foam::meshless::bodyModels::nosbPd::readFailure()
 template<int Dim>
 void Foam::meshless::bodyModels::nosbPd::updateBonds()
 {
-    nSingular_ = nosbPdOperators::shapeTensors<Dim>
+    nSingular_ = nosbPdOperators::bondGradients<Dim>
     (
-        *families_, X0_.data(), Kinv_.data(), m_.data(), resolved_.data()
+        *families_, X0_.data(), order_, body_.kernel().radius(), g_.data(),
+        m_.data(), resolved_.data()
     );
     families_->damage(V0_, damage_);
 }
@@ -147,7 +149,7 @@ void Foam::meshless::bodyModels::nosbPd::evaluate
 
     nosbPdOperators::deformationGradients<Dim>
     (
-        *families_, X0_.data(), x, Kinv_.data(), resolved_.data(), F_.data()
+        *families_, x, g_.data(), resolved_.data(), F_.data()
     );
 
     constexpr label nt = Dim*Dim;
@@ -156,10 +158,10 @@ void Foam::meshless::bodyModels::nosbPd::evaluate
     #pragma omp parallel for schedule(static)
     for (label i = 0; i < n; ++i)
     {
-        double* PKi = PK_.data() + i*nt;
+        double* Pi = P_.data() + i*nt;
         if (!resolved_[i])
         {
-            for (label c = 0; c < nt; ++c) PKi[c] = 0;
+            for (label c = 0; c < nt; ++c) Pi[c] = 0;
             continue;
         }
         tensor F(tensor::I), Fold(tensor::I);
@@ -174,12 +176,7 @@ void Foam::meshless::bodyModels::nosbPd::evaluate
         const tensor P = law.stress(i, Fold, F);
         for (label a = 0; a < Dim; ++a)
         {
-            for (label b = 0; b < Dim; ++b)
-            {
-                scalar s = 0;
-                for (label k = 0; k < Dim; ++k) s += P(a, k)*Kinv_(i, k*Dim + b);
-                PKi[a*Dim + b] = s;
-            }
+            for (label b = 0; b < Dim; ++b) Pi[a*Dim + b] = P(a, b);
         }
         if (commit)
         {
@@ -190,8 +187,8 @@ void Foam::meshless::bodyModels::nosbPd::evaluate
 
     nosbPdOperators::forceDensity<Dim>
     (
-        *families_, X0_.data(), x, PK_.data(), F_.data(), m_.data(),
-        resolved_.data(), C_, acc_.data()
+        *families_, X0_.data(), x, P_.data(), g_.data(), F_.data(),
+        m_.data(), resolved_.data(), C_, acc_.data()
     );
 
     double* a = acc_.data();
@@ -241,16 +238,16 @@ void Foam::meshless::bodyModels::nosbPd::connect(particleScene& scene)
     {
         nosbPdOperators::deformationGradients<2>
         (
-            *families_, X0_.data(), set.positions().data(), Kinv_.data(),
-            resolved_.data(), F_.data()
+            *families_, set.positions().data(), g_.data(), resolved_.data(),
+            F_.data()
         );
     }
     else
     {
         nosbPdOperators::deformationGradients<3>
         (
-            *families_, X0_.data(), set.positions().data(), Kinv_.data(),
-            resolved_.data(), F_.data()
+            *families_, set.positions().data(), g_.data(), resolved_.data(),
+            F_.data()
         );
     }
     std::copy(F_.data(), F_.data() + F_.size()*F_.nComponents(), Fold_.data());
@@ -259,7 +256,8 @@ void Foam::meshless::bodyModels::nosbPd::connect(particleScene& scene)
     Info<< "nosbPd " << body_.name() << ": "
         << families_->nBonds()/max(set.size(), label(1))
         << " bonds per particle, horizon " << body_.kernel().radius()
-        << ", law " << law_->type() << ", hourglassCoefficient " << Gs_;
+        << ", F of order " << order_ << ", law " << law_->type()
+        << ", hourglassCoefficient " << Gs_;
     if (s0_ > 0)
     {
         Info<< ", critical stretch " << s0_ << " (" << nRead

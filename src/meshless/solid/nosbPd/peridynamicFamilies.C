@@ -50,6 +50,20 @@ Foam::meshless::peridynamicFamilies::peridynamicFamilies
             omegaV_[b] = W.W(std::sqrt(r2))*V(j, 0);
         }
     }
+
+    reverse_.assign(bonds_.nPairs(), -1);
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < n; ++i)
+    {
+        for (label b = begin(i); b < end(i); ++b)
+        {
+            const label j = idx[b];
+            for (label c = begin(j); c < end(j); ++c)
+            {
+                if (idx[c] == i) { reverse_[b] = c; break; }
+            }
+        }
+    }
 }
 
 
