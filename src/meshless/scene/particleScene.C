@@ -70,6 +70,20 @@ Foam::meshless::particleScene::particleScene(const polyMesh& mesh)
         b.model().connect(*this);
     }
 
+    if (dict_.found("monitors"))
+    {
+        for (const entry& e : dict_.subDict("monitors"))
+        {
+            if (!e.isDict())
+            {
+                FatalIOErrorInFunction(dict_.subDict("monitors"))
+                    << "Entry '" << e.keyword() << "' in 'monitors':"
+                    << " expected a monitor dictionary" << exit(FatalIOError);
+            }
+            monitors_.append(monitor::New(e.keyword(), e.dict(), *this));
+        }
+    }
+
     // Escape box: the mesh with room for wall layers and a splash
     domain_.inflate(0.1);
     domain_.min() -= vector::uniform(10*maxSpacing);
@@ -213,6 +227,19 @@ void Foam::meshless::particleScene::write()
                 zPlane_
             );
         }
+    }
+}
+
+
+void Foam::meshless::particleScene::sampleMonitors
+(
+    const scalar t,
+    const bool force
+)
+{
+    for (monitor& m : monitors_)
+    {
+        m.sample(t, force);
     }
 }
 

@@ -93,6 +93,7 @@ void Foam::meshless::particleTimeLoop::run(const stepFunction& step)
     word lastWritten = runTime_.timeName();
 
     Info<< "Starting time loop" << nl << endl;
+    scene_.sampleMonitors(runTime_.value());
 
     while (runTime_.run())
     {
@@ -109,6 +110,7 @@ void Foam::meshless::particleTimeLoop::run(const stepFunction& step)
         particleSteps += nParticles;
 
         scene_.checkState(lastWritten);
+        scene_.sampleMonitors(runTime_.value(), !runTime_.run());
 
         runTime_.write();
         if (runTime_.writeTime())

@@ -1,0 +1,491 @@
+/*---------------------------------------------------------------------------*\
+  meshlessFoam: meshless fluid-structure interaction inside OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "tlsph.H"
+#include "particleScene.H"
+#include "particleExpression.H"
+#include "tlsphOperators.H"
+#include "dictionaryChecks.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace meshless
+{
+namespace bodyModels
+{
+    defineTypeNameAndDebug(tlsph, 0);
+    addToRunTimeSelectionTable(bodyModel, tlsph, dictionary);
+}
+}
+}
+
+const Foam::Enum<Foam::meshless::bodyModels::tlsph::integratorType>
+Foam::meshless::bodyModels::tlsph::integratorNames
+({
+    { integratorType::rk4, "rk4" },
+    { integratorType::verlet, "verlet" },
+});
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<int Dim>
+void Foam::meshless::bodyModels::tlsph::buildReference()
+{
+    const label n = body_.particles().size();
+    const double* X = X0_.data();
+
+    cellLinkedList cells(Dim, body_.kernel().radius());
+    cells.build(X, n);
+    pairs_.build(cells, X, n, true);
+
+    const label singular = tlsphOperators::reference<Dim>
+    (
+        pairs_, body_.kernel(), X, V0_.data(),
+        vgradW_, corrGradW_, Wab_, KinvT_
+    );
+
+    if (singular >= 0)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Body " << body_.name() << ": the correction matrix K (eq. 35)"
+            << " of particle " << body_.particles().ids()[singular]
+            << " is singular (" << pairs_.nNeighbours(singular)
+            << " neighbours): the solid's particles must fill the kernel"
+            << " support; check the seeding or the kernel's size"
+            << exit(FatalIOError);
+    }
+}
+
+
+template<int Dim>
+void Foam::meshless::bodyModels::tlsph::computeF(particleField& F) const
+{
+    tlsphOperators::deformationGradient<Dim>
+    (
+        pairs_,
+        corrGradW_.data(),
+        X0_.data(),
+        body_.particles().positions().data(),
+        F.data()
+    );
+}
+
+
+template<int Dim>
+void Foam::meshless::bodyModels::tlsph::evaluate
+(
+    const scalar t,
+    costAccounting& costs
+)
+{
+    const label n = body_.particles().size();
+    double* acc = acc_.data();
+    {
+        costAccounting::scope timer(costs, stressCost_);
+
+        const double* x = body_.particles().positions().data();
+        const double* X = X0_.data();
+        const double* V = V0_.data();
+        const double* F = F_.data();
+        const double* Fo = Fold_.data();
+        double* A = A_.data();
+        const constitutiveLaw& law = law_();
+
+        computeF<Dim>(F_);
+
+        #pragma omp parallel for schedule(static)
+        for (label a = 0; a < n; ++a)
+        {
+            tensor Fa(tensor::I), Foa(tensor::I);
+            for (int i = 0; i < Dim; ++i)
+            {
+                for (int j = 0; j < Dim; ++j)
+                {
+                    Fa[3*i + j] = F[(a*Dim + i)*Dim + j];
+                    Foa[3*i + j] = Fo[(a*Dim + i)*Dim + j];
+                }
+            }
+            const tensor P = law.stress(a, Foa, Fa);
+            tlsphOperators::stressTimesKinvT<Dim>
+            (
+                P.cdata(), KinvT_.data() + a*Dim*Dim, A + a*Dim*Dim
+            );
+        }
+
+        tlsphOperators::internalForce<Dim>(pairs_, vgradW_.data(), V, A, acc);
+        if (hourglass_ > 0)
+        {
+            tlsphOperators::hourglassForce<Dim>
+            (
+                pairs_, Wab_.data(), V, X, x, F,
+                0.5*hourglass_*law.elastic().E(), acc
+            );
+        }
+
+        const double* m = mass_.data();
+        #pragma omp parallel for schedule(static)
+        for (label a = 0; a < n; ++a)
+        {
+            for (int i = 0; i < Dim; ++i) acc[a*Dim + i] /= m[a];
+        }
+        Fcurrent_ = false;
+    }
+
+    body_.addEffectAccelerations(t, acc_, costs);
+    constraints_->addLoads(t, acc_);
+
+    for (label a = 0; a < n; ++a)
+    {
+        if (!constraints_->isFree(a))
+        {
+            for (int i = 0; i < Dim; ++i) acc[a*Dim + i] = 0;
+        }
+    }
+}
+
+
+void Foam::meshless::bodyModels::tlsph::evaluateDim
+(
+    const scalar t,
+    costAccounting& costs
+)
+{
+    if (body_.dim() == 2) evaluate<2>(t, costs);
+    else evaluate<3>(t, costs);
+}
+
+
+void Foam::meshless::bodyModels::tlsph::computeFDim(particleField& F) const
+{
+    if (body_.dim() == 2) computeF<2>(F);
+    else computeF<3>(F);
+}
+
+
+void Foam::meshless::bodyModels::tlsph::stepRK4
+(
+    const scalar t,
+    const scalar dt,
+    costAccounting& costs
+)
+{
+    particleField& xf = body_.particles().positions();
+    const label nv = xf.size()*body_.dim();
+    double* x = xf.data();
+    double* U = U_.data();
+    const double* acc = acc_.data();
+    double* xn = xn_.data();
+    double* Un = Un_.data();
+    double* sx = sumX_.data();
+    double* su = sumU_.data();
+
+    std::copy(x, x + nv, xn);
+    std::copy(U, U + nv, Un);
+    std::fill(sx, sx + nv, 0.0);
+    std::fill(su, su + nv, 0.0);
+
+    // Eq. 43-45: stage s at t + c_s dt from the previous stage's rates
+    static const double c[4] = {0, 0.5, 0.5, 1};
+    static const double w[4] = {1, 2, 2, 1};
+
+    for (int s = 0; s < 4; ++s)
+    {
+        if (s > 0)
+        {
+            #pragma omp parallel for schedule(static)
+            for (label k = 0; k < nv; ++k)
+            {
+                x[k] = xn[k] + c[s]*dt*U[k];
+                U[k] = Un[k] + c[s]*dt*acc[k];
+            }
+        }
+        constraints_->prescribe(t + c[s]*dt, X0_, xf, U_);
+        evaluateDim(t + c[s]*dt, costs);
+
+        #pragma omp parallel for schedule(static)
+        for (label k = 0; k < nv; ++k)
+        {
+            sx[k] += w[s]*U[k];
+            su[k] += w[s]*acc[k];
+        }
+    }
+
+    #pragma omp parallel for schedule(static)
+    for (label k = 0; k < nv; ++k)
+    {
+        x[k] = xn[k] + dt/6*sx[k];
+        U[k] = Un[k] + dt/6*su[k];
+    }
+    constraints_->prescribe(t + dt, X0_, xf, U_);
+    accValid_ = false;
+}
+
+
+void Foam::meshless::bodyModels::tlsph::stepVerlet
+(
+    const scalar t,
+    const scalar dt,
+    costAccounting& costs
+)
+{
+    particleField& xf = body_.particles().positions();
+    const label nv = xf.size()*body_.dim();
+    double* x = xf.data();
+    double* U = U_.data();
+    const double* acc = acc_.data();
+
+    if (!accValid_)
+    {
+        constraints_->prescribe(t, X0_, xf, U_);
+        evaluateDim(t, costs);
+    }
+
+    // Kick, drift, (forces), kick
+    #pragma omp parallel for schedule(static)
+    for (label k = 0; k < nv; ++k)
+    {
+        U[k] += 0.5*dt*acc[k];
+        x[k] += dt*U[k];
+    }
+    constraints_->prescribe(t + dt, X0_, xf, U_);
+    evaluateDim(t + dt, costs);
+
+    #pragma omp parallel for schedule(static)
+    for (label k = 0; k < nv; ++k)
+    {
+        U[k] += 0.5*dt*acc[k];
+    }
+    constraints_->prescribe(t + dt, X0_, xf, U_);
+    accValid_ = true;
+}
+
+
+void Foam::meshless::bodyModels::tlsph::commit()
+{
+    // Only incremental laws need F of the end state now (Verlet's last
+    // evaluation had it already); the strain energy computes it on demand
+    if (!law_->incremental()) return;
+
+    if (integrator_ == integratorType::rk4 || !accValid_)
+    {
+        computeFDim(F_);
+    }
+    Fcurrent_ = true;
+
+    const label n = body_.particles().size();
+    const label dim = body_.dim();
+    {
+        for (label a = 0; a < n; ++a)
+        {
+            tensor Fa(tensor::I), Foa(tensor::I);
+            for (label i = 0; i < dim; ++i)
+            {
+                for (label j = 0; j < dim; ++j)
+                {
+                    Fa[3*i + j] = F_(a, i*dim + j);
+                    Foa[3*i + j] = Fold_(a, i*dim + j);
+                }
+            }
+            law_->commit(a, Foa, Fa);
+        }
+    }
+    std::copy(F_.data(), F_.data() + n*dim*dim, Fold_.data());
+}
+
+
+Foam::scalar Foam::meshless::bodyModels::tlsph::stableDeltaT
+(
+    const scalar maxCo
+) const
+{
+    return maxCo*body_.kernel().h()/(c_ + U_.maxMagnitude());
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::meshless::bodyModels::tlsph::tlsph
+(
+    particleBody& body,
+    const dictionary& dict
+)
+:
+    bodyModel(body, dict),
+    restart_(body.particles().found("X0")),
+    U_(body.particles().addField("U", particleField::kind::vector)),
+    X0_(body.particles().addField("X0", particleField::kind::vector)),
+    displacement_
+    (
+        body.particles().addField("displacement", particleField::kind::vector)
+    ),
+    mass_(body.requireField("mass", "model tlsph")),
+    V0_(body.requireField("volume", "model tlsph")),
+    acc_(body.particles().addScratchField("acc", particleField::kind::vector)),
+    F_(body.particles().addScratchField("F", particleField::kind::tensor)),
+    Fold_(body.particles().addScratchField("Fold", particleField::kind::tensor)),
+    A_(body.particles().addScratchField("PKinvT", particleField::kind::tensor)),
+    xn_(body.particles().addScratchField("xn", particleField::kind::vector)),
+    Un_(body.particles().addScratchField("Un", particleField::kind::vector)),
+    sumX_(body.particles().addScratchField("sumX", particleField::kind::vector)),
+    sumU_(body.particles().addScratchField("sumU", particleField::kind::vector)),
+    law_(constitutiveLaw::New(dict, body.dim(), body.particles())),
+    integrator_(integratorNames.get("integrator", dict)),
+    hourglass_(dict.getOrDefault<scalar>("hourglassControl", 0)),
+    minSubSteps_
+    (
+        dict.found("subSteps") ? readPositiveLabel(dict, "subSteps") : 1
+    ),
+    c_(std::sqrt(law_->waveModulus()/body.density())),
+    maxCo_(0.3),
+    lastSubSteps_(1),
+    accValid_(false),
+    Fcurrent_(false),
+    stressCost_(-1)
+{
+    if (hourglass_ < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "hourglassControl " << hourglass_ << ": expected a coefficient"
+            << " >= 0 (0: off; Ganzenmueller 2015 uses 10 to 50)"
+            << exit(FatalIOError);
+    }
+
+    particleSet& set = body.particles();
+    const label nv = set.size()*body.dim();
+
+    // A fresh start: the seeded state is the reference configuration
+    if (!restart_)
+    {
+        std::copy
+        (
+            set.positions().data(),
+            set.positions().data() + nv,
+            X0_.data()
+        );
+        if (dict.found("initialVelocity"))
+        {
+            particleExpression::evaluate
+            (
+                dict.subDict("initialVelocity"),
+                X0_,
+                U_
+            );
+        }
+    }
+
+    if (body.dim() == 2) buildReference<2>();
+    else buildReference<3>();
+
+    // The current F is the step's start for incremental laws
+    computeFDim(F_);
+    std::copy(F_.data(), F_.data() + F_.size()*F_.nComponents(), Fold_.data());
+    for (label k = 0; k < nv; ++k)
+    {
+        displacement_.data()[k] = set.positions().data()[k] - X0_.data()[k];
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::meshless::bodyModels::tlsph::connect(particleScene& scene)
+{
+    constraints_.reset
+    (
+        new solidConstraints
+        (
+            dict_,
+            body_.particles(),
+            X0_,
+            scene.mesh()
+        )
+    );
+    stressCost_ = scene.costs().part(body_.name() + ": tlsph stress");
+
+    Info<< "    " << body_.name() << ": tlsph, "
+        << integratorNames[integrator_] << ", wave speed " << c_ << " m/s, "
+        << pairs_.nPairs() << " reference pairs, hourglassControl "
+        << hourglass_ << nl;
+    constraints_->describe(Info);
+}
+
+
+Foam::scalar Foam::meshless::bodyModels::tlsph::maxDeltaT
+(
+    const scalar maxCo
+) const
+{
+    maxCo_ = maxCo;
+    return minSubSteps_*stableDeltaT(maxCo);
+}
+
+
+void Foam::meshless::bodyModels::tlsph::advance
+(
+    const scalar t,
+    const scalar dt,
+    costAccounting& costs
+)
+{
+    const label nSub = max
+    (
+        minSubSteps_,
+        label(std::ceil(dt/stableDeltaT(maxCo_)*(1 - 1e-12)))
+    );
+    if (nSub != lastSubSteps_)
+    {
+        Info<< "    " << body_.name() << ": " << nSub
+            << " solid sub-steps per step" << endl;
+        lastSubSteps_ = nSub;
+    }
+
+    const scalar h = dt/nSub;
+    for (label k = 0; k < nSub; ++k)
+    {
+        if (integrator_ == integratorType::rk4)
+        {
+            stepRK4(t + k*h, h, costs);
+        }
+        else
+        {
+            stepVerlet(t + k*h, h, costs);
+        }
+    }
+    commit();
+
+    particleSet& set = body_.particles();
+    const label nv = set.size()*body_.dim();
+    for (label k = 0; k < nv; ++k)
+    {
+        displacement_.data()[k] = set.positions().data()[k] - X0_.data()[k];
+    }
+}
+
+
+Foam::scalar Foam::meshless::bodyModels::tlsph::strainEnergy() const
+{
+    if (!Fcurrent_)
+    {
+        computeFDim(F_);
+        Fcurrent_ = true;
+    }
+    const label n = body_.particles().size();
+    const label dim = body_.dim();
+    scalar W = 0;
+    for (label a = 0; a < n; ++a)
+    {
+        tensor Fa(tensor::I);
+        for (label i = 0; i < dim; ++i)
+        {
+            for (label j = 0; j < dim; ++j) Fa[3*i + j] = F_(a, i*dim + j);
+        }
+        W += V0_(a, 0)*law_->energyDensity(a, Fa);
+    }
+    return W;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,256 @@
+#!/usr/bin/python3
+"""Oscillating plate: period and first amplitude of the free end against
+plate theory, in the form of the ISPH-TLSPH paper's Table 3.
+
+Theory (Euler-Bernoulli plate, clamped-free, first mode kL = 1.875, plane
+strain modulus E' = E/(1 - nu^2), E = 3K(1 - 2nu)):
+    omega = k^2 sqrt(E' T^2/(12 rho)),  period 2 pi/omega,
+    A = V0 c0/omega (the initial tip speed V0 c0 over omega),
+with c0 = sqrt(K/rho). The constants are read from the case
+(constant/particleProperties) with foamDictionary; L, T and V0 are the
+set-up's (system/blockMeshDict, the initial velocity expression).
+
+From the monitor 'tip' (kernel-interpolated displacement at the free end,
+mid-thickness): the period is twice the mean time between successive zero
+crossings of the vertical displacement, the first amplitude its maximum
+before the first crossing (peak of a parabola through the largest sample
+and its neighbours).
+
+Each run's figures go to validation/runs/dx<spacing>.txt; the table of all
+runs present is written to validation/result.md with the plot
+validation/tip.png (tip displacement, theory, energies of the finest run).
+With --check, exits 1 when the run of this case misses the targets at
+T/dx = 20 (period < 1 %, amplitude < 2 %) or, at another resolution, the
+paper's own errors at that resolution.
+
+Usage: validate.py <case> [--check]
+"""
+import math
+import os
+import subprocess
+import sys
+
+here = os.path.dirname(os.path.abspath(__file__))
+project = os.environ.get("MESHLESS_PROJECT",
+                         os.path.join(here, "..", "..", "..", ".."))
+sys.path.insert(0, os.path.join(project, "etc", "python"))
+from foamMonitor import read_monitor, run_cost  # noqa: E402
+
+L = 0.2
+THICK = 0.02
+V0 = 0.01
+KL = 1.875
+
+# ISPH-TLSPH paper, Table 3 (T/dx: period t c0/L, amplitude A/L)
+PAPER = {40: (74.10, 0.119), 20: (74.80, 0.120), 10: (77.50, 0.123)}
+TARGET = {20: (0.01, 0.02)}
+
+
+def entry(case, key):
+    out = subprocess.run(
+        ["foamDictionary", "-expand", "-entry", key, "-value",
+         os.path.join(case, "constant", "particleProperties")],
+        check=True, capture_output=True, text=True).stdout
+    return out.strip()
+
+
+def theory(case):
+    prefix = "bodies.plate.constitutiveLaw."
+    K = float(entry(case, prefix + "K"))
+    nu = float(entry(case, prefix + "nu"))
+    rho = float(entry(case, "bodies.plate.density"))
+    E = 3 * K * (1 - 2 * nu)
+    Ep = E / (1 - nu**2)
+    k = KL / L
+    omega = k**2 * math.sqrt(Ep * THICK**2 / (12 * rho))
+    c0 = math.sqrt(K / rho)
+    return {"c0": c0, "omega": omega, "period": 2 * math.pi / omega,
+            "amplitude": V0 * c0 / omega}
+
+
+def crossings(t, y):
+    """Times where y changes sign (exact zeros, as at the start, skipped)"""
+    out = []
+    prev = None
+    for i in range(len(y)):
+        if y[i] == 0:
+            continue
+        if prev is not None and (y[prev] > 0) != (y[i] > 0):
+            out.append(t[prev] - y[prev] * (t[i] - t[prev])
+                       / (y[i] - y[prev]))
+        prev = i
+    return out
+
+
+def peak(t, y, upto):
+    idx = [i for i in range(len(t)) if t[i] <= upto]
+    i = max(idx, key=lambda j: y[j])
+    if 0 < i < len(y) - 1:
+        a, b, c = y[i - 1], y[i], y[i + 1]
+        den = a - 2 * b + c
+        if den < 0:
+            return b - 0.25 * (a - c)**2 / den
+    return y[i]
+
+
+def analyse(case):
+    th = theory(case)
+    tip = read_monitor(case, "tip")
+    t, y = tip["time"], tip["dy"]
+    z = crossings(t, y)
+    if len(z) < 2:
+        raise RuntimeError("fewer than two zero crossings: run longer")
+    half = [(z[k + 1] - z[k]) for k in range(len(z) - 1)]
+    period = 2 * sum(half) / len(half)
+    amplitude = peak(t, y, z[0])
+    dx = spacing(case)
+    cost = run_cost(os.path.join(case, "log.isphTlsphFoam"))
+    return {
+        "TdX": round(THICK / dx), "dx": dx,
+        "period": period * th["c0"] / L, "amplitude": amplitude / L,
+        "periodTheory": th["period"] * th["c0"] / L,
+        "amplitudeTheory": th["amplitude"] / L,
+        "crossings": len(z), "endTime": t[-1],
+        "particles": cost["particles"], "steps": cost["steps"],
+        "wall": cost["wall"], "rate": cost["rate"],
+        "threads": os.environ.get("OMP_NUM_THREADS", "all"),
+    }
+
+
+def spacing(case):
+    res = os.path.join(case, "system", "resolution")
+    if os.path.exists(res):
+        return float(open(res).read().split()[1].rstrip(";"))
+    out = subprocess.run(
+        ["foamDictionary", "-entry", "dx", "-value",
+         os.path.join(case, "system", "seedParticlesDict")],
+        check=True, capture_output=True, text=True).stdout
+    return float(out.strip())
+
+
+def save(run):
+    os.makedirs(os.path.join(here, "runs"), exist_ok=True)
+    with open(os.path.join(here, "runs", "dx%g.txt" % run["dx"]), "w") as f:
+        for k, v in run.items():
+            f.write("%s %s\n" % (k, v))
+
+
+def load_runs():
+    runs = []
+    folder = os.path.join(here, "runs")
+    for name in sorted(os.listdir(folder)) if os.path.isdir(folder) else []:
+        run = {}
+        for line in open(os.path.join(folder, name)):
+            k, v = line.split(None, 1)
+            v = v.strip()
+            try:
+                run[k] = float(v) if k != "threads" else v
+            except ValueError:
+                run[k] = v
+        run["TdX"] = int(run["TdX"])
+        runs.append(run)
+    return sorted(runs, key=lambda r: -r["TdX"])
+
+
+def errors(run):
+    return (run["period"] / run["periodTheory"] - 1,
+            run["amplitude"] / run["amplitudeTheory"] - 1)
+
+
+def write_table(runs):
+    th = runs[0]
+    lines = [
+        "# Oscillating plate: period and first amplitude vs plate theory",
+        "",
+        "Command: `tutorials/isphTlsphFoam/oscillatingPlate/Allrun -dx "
+        "<spacing>` (T/dx = 0.02/spacing), one line per run present in "
+        "validation/runs/.",
+        "",
+        "| method | T/dx | period t c0/L | error | A/L | error | particles "
+        "| steps | wall time | particle-steps/s | threads |",
+        "|---|---|---|---|---|---|---|---|---|---|---|",
+        "| plate theory | - | %.2f | - | %.4f | - | | | | | |"
+        % (th["periodTheory"], th["amplitudeTheory"]),
+    ]
+    for r in runs:
+        ep, ea = errors(r)
+        lines.append(
+            "| isphTlsphFoam | %d | %.2f | %+.2f %% | %.4f | %+.2f %% | %d "
+            "| %d | %.0f s | %.3g | %s |"
+            % (r["TdX"], r["period"], 100 * ep, r["amplitude"], 100 * ea,
+               r["particles"], r["steps"], r["wall"], r["rate"],
+               r["threads"]))
+    for n in sorted(PAPER, reverse=True):
+        p, a = PAPER[n]
+        lines.append(
+            "| paper's TLSPH (Table 3) | %d | %.2f | %+.2f %% | %.3f | "
+            "%+.2f %% | | | | | |"
+            % (n, p, 100 * (p / th["periodTheory"] - 1), a,
+               100 * (a / th["amplitudeTheory"] - 1)))
+    lines += [
+        "",
+        "Targets at T/dx = 20: period error < 1 %, amplitude error < 2 %.",
+        "",
+        "Set-up: ISPH-TLSPH paper 3.1 (L = 0.2 m, T = 0.02 m, rho = 1000, "
+        "K = 3.25 MPa, nu = 0.3975, plane strain, kL = 1.875, V0 = 0.01), "
+        "cubic spline kernel h = 1.2 dx, RK4, linearElastic with finite "
+        "kinematics, clamp 0.01 m long behind x = 0. Plot: tip.png.",
+    ]
+    with open(os.path.join(here, "result.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
+def plot(case, run):
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("matplotlib missing: no plot")
+        return
+    th = theory(case)
+    tip = read_monitor(case, "tip")
+    en = read_monitor(case, "energy")
+    fig, (a1, a2) = plt.subplots(2, 1, figsize=(7, 7), sharex=True)
+    a1.plot(tip["time"], [v / L for v in tip["dy"]],
+            label="isphTlsphFoam, T/dx = %d" % run["TdX"])
+    ts = tip["time"]
+    a1.plot(ts, [th["amplitude"] / L * math.sin(th["omega"] * s)
+                 for s in ts], "k--", label="plate theory")
+    a1.set_ylabel("tip displacement y/L")
+    a1.legend(loc="lower left")
+    for key, lab in (("plate:kinetic", "kinetic"),
+                     ("plate:strain", "strain"), ("total", "total")):
+        a2.plot(en["time"], en[key], label=lab)
+    a2.set_xlabel("t [s]")
+    a2.set_ylabel("energy [J/m]")
+    a2.legend(loc="center right")
+    fig.tight_layout()
+    fig.savefig(os.path.join(here, "tip.png"), dpi=110)
+
+
+def main():
+    case = sys.argv[1] if len(sys.argv) > 1 else "."
+    check = "--check" in sys.argv
+    run = analyse(case)
+    save(run)
+    write_table(load_runs())
+    plot(case, run)
+    ep, ea = errors(run)
+    n = run["TdX"]
+    limits = TARGET.get(n)
+    if limits is None and n in PAPER:
+        limits = (PAPER[n][0] / run["periodTheory"] - 1,
+                  PAPER[n][1] / run["amplitudeTheory"] - 1)
+    print("T/dx = %d: period error %+.2f %%, amplitude error %+.2f %%"
+          % (n, 100 * ep, 100 * ea))
+    if check and limits is not None:
+        ok = abs(ep) < limits[0] and abs(ea) < limits[1]
+        print("target (period < %.2f %%, amplitude < %.2f %%): %s"
+              % (100 * limits[0], 100 * limits[1], "met" if ok else "MISSED"))
+        sys.exit(0 if ok else 1)
+
+
+if __name__ == "__main__":
+    main()
