@@ -329,33 +329,27 @@ void Foam::meshless::bodyModels::nosbPd::advance
     const double* a = acc_.data();
     const solidConstraints& bc = *constraints_;
 
-    // Velocity Verlet (eq. 55): half kick, drift ...
-    #pragma omp parallel for schedule(static)
-    for (label i = 0; i < n; ++i)
+    // Half kick of the free particles, and their drift by dtDrift
+    auto kick = [&](const scalar dtDrift)
     {
-        if (!bc.isFree(i)) continue;
-        for (label d = 0; d < dim; ++d)
+        #pragma omp parallel for schedule(static)
+        for (label i = 0; i < n; ++i)
         {
-            const label k = i*dim + d;
-            U[k] += 0.5*dt*a[k];
-            x[k] += dt*U[k];
+            if (!bc.isFree(i)) continue;
+            for (label k = i*dim; k < (i + 1)*dim; ++k)
+            {
+                U[k] += 0.5*dt*a[k];
+                x[k] += dtDrift*U[k];
+            }
         }
-    }
+    };
+
+    // Velocity Verlet (eq. 55): half kick and drift, forces at the new
+    // positions, half kick
+    kick(dt);
     bc.prescribe(t + dt, X0_, set.positions(), U_);
-
-    // ... forces at the new positions, half kick
     evaluateDim(t + dt, true, costs);
-
-    #pragma omp parallel for schedule(static)
-    for (label i = 0; i < n; ++i)
-    {
-        if (!bc.isFree(i)) continue;
-        for (label d = 0; d < dim; ++d)
-        {
-            const label k = i*dim + d;
-            U[k] += 0.5*dt*a[k];
-        }
-    }
+    kick(0);
 }
 
 
