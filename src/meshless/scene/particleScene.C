@@ -213,6 +213,7 @@ void Foam::meshless::particleScene::write()
     for (const particleBody& b : bodies_)
     {
         lagrangianIO::write(b.particles(), runTime, runTime.timeName(), zPlane_);
+        b.model().write(runTime, runTime.timeName());
     }
     if (vtp_)
     {
