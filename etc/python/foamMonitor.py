@@ -74,3 +74,16 @@ def load_runs(folder):
                 run[k] = v
         runs.append(run)
     return runs
+
+
+def pyplot():
+    """matplotlib's pyplot for writing PNGs (no display), or None with a
+    message when matplotlib is missing (the figures are still written)"""
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        return plt
+    except ImportError:
+        print("matplotlib missing: no plot")
+        return None

@@ -12,6 +12,7 @@ Description
 
 #include <gtest/gtest.h>
 #include "testHelpers.H"
+#include "unitCube.H"
 #include "seedLattice.H"
 #include "seedRegion.H"
 #include "wallLayers.H"
@@ -25,6 +26,7 @@ Description
 
 using namespace Foam;
 using namespace Foam::meshless;
+using meshlessTest::unitCube;
 
 namespace
 {
@@ -44,111 +46,6 @@ label latticeIndex(const scalar x, const scalar origin, const scalar dx)
     const label i = label(std::round(f));
     return std::abs(f - i) < 1e-9 ? i : label(-1e9);
 }
-
-
-//- A unit cube of n^3 hexes with one wall patch, and its Time, in memory
-class unitCube
-{
-public:
-
-    Time runTime;
-    polyMesh mesh;
-    meshSearch search;
-
-    static dictionary controlDict()
-    {
-        dictionary d;
-        d.add("deltaT", 1.0);
-        d.add("writeControl", "timeStep");
-        d.add("writeInterval", 1);
-        d.add("writeFormat", "ascii");
-        return d;
-    }
-
-    static pointField cubePoints(const label n)
-    {
-        pointField pts((n + 1)*(n + 1)*(n + 1));
-        label pointi = 0;
-        for (label k = 0; k <= n; ++k)
-        for (label j = 0; j <= n; ++j)
-        for (label i = 0; i <= n; ++i)
-        {
-            pts[pointi++] = point(i, j, k)/scalar(n);
-        }
-        return pts;
-    }
-
-    static cellShapeList hexes(const label n)
-    {
-        auto p = [n](label i, label j, label k)
-        {
-            return i + (n + 1)*(j + (n + 1)*k);
-        };
-        cellShapeList shapes(n*n*n);
-        label celli = 0;
-        for (label k = 0; k < n; ++k)
-        for (label j = 0; j < n; ++j)
-        for (label i = 0; i < n; ++i)
-        {
-            shapes[celli++] = cellShape
-            (
-                cellModel::ref(cellModel::HEX),
-                labelList
-                ({
-                    p(i, j, k), p(i + 1, j, k), p(i + 1, j + 1, k),
-                    p(i, j + 1, k), p(i, j, k + 1), p(i + 1, j, k + 1),
-                    p(i + 1, j + 1, k + 1), p(i, j + 1, k + 1)
-                })
-            );
-        }
-        return shapes;
-    }
-
-    //- The faces of the cube's surface, as one patch
-    static faceListList surface(const label n)
-    {
-        const pointField pts(cubePoints(n));
-        DynamicList<face> faces;
-        for (const cellShape& shape : hexes(n))
-        {
-            for (const face& f : shape.faces())
-            {
-                const point c(f.centre(pts));
-                if (cmptMin(c) < 1e-12 || cmptMax(c) > 1 - 1e-12)
-                {
-                    faces.append(f);
-                }
-            }
-        }
-        return faceListList(1, faceList(std::move(faces)));
-    }
-
-    explicit unitCube(const label n)
-    :
-        runTime(controlDict(), "/tmp", "meshlessUnitCube", "system",
-                "constant", false, false),
-        mesh
-        (
-            IOobject
-            (
-                polyMesh::defaultRegion,
-                runTime.timeName(),
-                runTime,
-                IOobject::NO_READ,
-                IOobject::NO_WRITE
-            ),
-            cubePoints(n),
-            hexes(n),
-            surface(n),
-            wordList(1, "walls"),
-            wordList(1, "wall"),
-            "defaultFaces",
-            "empty",
-            wordList(1, word::null)
-        ),
-        search(mesh)
-    {}
-};
 
 
 //- Lattice points of the cube at spacing dx, offset 1/2

@@ -21,6 +21,30 @@ namespace bodyModels
 }
 }
 
+namespace
+{
+    //- Particle a's dim x dim tensor (row-major) as a 3x3 tensor with
+    //  zz = 1 in 2D, as the constitutive laws take it
+    inline Foam::tensor particleTensor
+    (
+        const double* T,
+        const Foam::label a,
+        const Foam::label dim
+    )
+    {
+        Foam::tensor t(Foam::tensor::I);
+        for (Foam::label i = 0; i < dim; ++i)
+        {
+            for (Foam::label j = 0; j < dim; ++j)
+            {
+                t[3*i + j] = T[(a*dim + i)*dim + j];
+            }
+        }
+        return t;
+    }
+}
+
+
 const Foam::Enum<Foam::meshless::bodyModels::tlsph::integratorType>
 Foam::meshless::bodyModels::tlsph::integratorNames
 ({
@@ -99,16 +123,10 @@ void Foam::meshless::bodyModels::tlsph::evaluate
         #pragma omp parallel for schedule(static)
         for (label a = 0; a < n; ++a)
         {
-            tensor Fa(tensor::I), Foa(tensor::I);
-            for (int i = 0; i < Dim; ++i)
-            {
-                for (int j = 0; j < Dim; ++j)
-                {
-                    Fa[3*i + j] = F[(a*Dim + i)*Dim + j];
-                    Foa[3*i + j] = Fo[(a*Dim + i)*Dim + j];
-                }
-            }
-            const tensor P = law.stress(a, Foa, Fa);
+            const tensor P = law.stress
+            (
+                a, particleTensor(Fo, a, Dim), particleTensor(F, a, Dim)
+            );
             tlsphOperators::stressTimesKinvT<Dim>
             (
                 P.cdata(), KinvT_.data() + a*Dim*Dim, A + a*Dim*Dim
@@ -280,16 +298,12 @@ void Foam::meshless::bodyModels::tlsph::commit()
     {
         for (label a = 0; a < n; ++a)
         {
-            tensor Fa(tensor::I), Foa(tensor::I);
-            for (label i = 0; i < dim; ++i)
-            {
-                for (label j = 0; j < dim; ++j)
-                {
-                    Fa[3*i + j] = F_(a, i*dim + j);
-                    Foa[3*i + j] = Fold_(a, i*dim + j);
-                }
-            }
-            law_->commit(a, Foa, Fa);
+            law_->commit
+            (
+                a,
+                particleTensor(Fold_.data(), a, dim),
+                particleTensor(F_.data(), a, dim)
+            );
         }
     }
     std::copy(F_.data(), F_.data() + n*dim*dim, Fold_.data());
@@ -477,12 +491,8 @@ Foam::scalar Foam::meshless::bodyModels::tlsph::strainEnergy() const
     scalar W = 0;
     for (label a = 0; a < n; ++a)
     {
-        tensor Fa(tensor::I);
-        for (label i = 0; i < dim; ++i)
-        {
-            for (label j = 0; j < dim; ++j) Fa[3*i + j] = F_(a, i*dim + j);
-        }
-        W += V0_(a, 0)*law_->energyDensity(a, Fa);
+        W += V0_(a, 0)
+            *law_->energyDensity(a, particleTensor(F_.data(), a, dim));
     }
 
     // The hourglass control's springs store energy too

@@ -34,7 +34,7 @@ project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
 from foamMonitor import (read_monitor, run_cost, dictionary_entry,  # noqa
-                         save_run, load_runs)
+                         save_run, load_runs, pyplot)
 
 L = 0.1
 T = 0.01
@@ -146,18 +146,20 @@ def write_table(runs, E, nu):
         "(0.76 of critical for the first mode) to reach rest. Plot: "
         "deflection.png.",
     ]
+    lines += [
+        "",
+        "Wall times and rates are as measured where each run was made (the "
+        "runs above shared 2 cores with other jobs); "
+        "benchmarks/tlsphThroughput measures throughput on an idle machine.",
+    ]
     with open(os.path.join(here, "result.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
 
 
 def plot(case, run):
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        print("matplotlib missing: no plot")
+    plt = pyplot()
+    if plt is None:
         return
     tip = read_monitor(case, "tip")
     fig, ax = plt.subplots(figsize=(7, 4))

@@ -34,7 +34,7 @@ project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
 from foamMonitor import (read_monitor, run_cost, dictionary_entry,  # noqa
-                         save_run, load_runs)
+                         save_run, load_runs, pyplot)
 
 entry = dictionary_entry
 
@@ -180,18 +180,20 @@ def write_table(runs):
         "displacement is interpolated at (0.2, 0) by moving least squares. "
         "Plot: tip.png (the finest run with hourglass control).",
     ]
+    lines += [
+        "",
+        "Wall times and rates are as measured where each run was made (the "
+        "runs above shared 2 cores with other jobs); "
+        "benchmarks/tlsphThroughput measures throughput on an idle machine.",
+    ]
     with open(os.path.join(here, "result.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
 
 
 def plot(case, run):
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        print("matplotlib missing: no plot")
+    plt = pyplot()
+    if plt is None:
         return
     th = theory(case)
     tip = read_monitor(case, "tip")
@@ -220,7 +222,8 @@ def main():
     run = analyse(case)
     save(run)
     write_table(runs_present())
-    plot(case, run)
+    if run["hourglass"] > 0:
+        plot(case, run)
     ep, ea = errors(run)
     n = run["TdX"]
     limits = TARGET.get(n)

@@ -1,0 +1,174 @@
+/*---------------------------------------------------------------------------*\
+  meshlessFoam: meshless fluid-structure interaction inside OpenFOAM
+-------------------------------------------------------------------------------
+Description
+    Solid boundary conditions (solidConstraints) on particles of a unit cube
+    built in memory: each particle takes the first constraint whose region
+    holds it; clamped particles sit at X0 with no velocity; a prescribed
+    displacement table moves its particles by d(t) with velocity d'(t); a
+    load table is shared in proportion to mass (sum of m a = F(t)); only
+    loaded and unconstrained particles are free; bad input names the
+    constraint or keyword.
+
+\*---------------------------------------------------------------------------*/
+
+#include <gtest/gtest.h>
+#include "testHelpers.H"
+#include "unitCube.H"
+#include "solidConstraints.H"
+
+using namespace Foam;
+using namespace Foam::meshless;
+
+namespace
+{
+
+//- A 3D lattice of 10^3 particles in the unit cube, unequal masses
+struct solidBlock
+{
+    particleSet set;
+    particleField* X0;
+
+    solidBlock()
+    :
+        set("block", 3)
+    {
+        const std::vector<double> x =
+            meshlessTest::latticePoints(3, 10, 0.1);
+        set.resize(label(x.size())/3);
+        particleField& pos = set.positions();
+        for (label i = 0; i < set.size(); ++i)
+        {
+            for (label c = 0; c < 3; ++c) pos(i, c) = x[3*i + c] + 0.05;
+        }
+        particleField& m = set.addField("mass", particleField::kind::scalar);
+        for (label i = 0; i < set.size(); ++i) m(i, 0) = 1 + 0.01*(i % 7);
+        X0 = &set.addField("X0", particleField::kind::vector);
+        std::copy(pos.data(), pos.data() + 3*set.size(), X0->data());
+    }
+};
+
+const char* constraintsText =
+    "constraints"
+    "{"
+    "    root { type clamped; region { type box; min (-1 -1 -1); max (0.2 2 2); } }"
+    "    push"
+    "    {"
+    "        type displacement;"
+    "        region { type box; min (0.4 -1 -1); max (0.6 2 2); }"
+    "        displacement table ((0 (0 0 0)) (1 (0 0.2 0)) (2 (0 0.2 0)));"
+    "    }"
+    "    tip"
+    "    {"
+    "        type load;"
+    "        region { type box; min (0.8 -1 -1); max (2 2 2); }"
+    "        force table ((0 (0 0 0)) (1 (0 0 -30)) (5 (0 0 -30)));"
+    "    }"
+    "}";
+
+} // End anonymous namespace
+
+
+TEST(solidConstraints, eachKindOnItsParticles)
+{
+    meshlessTest::unitCube cube(4);
+    solidBlock b;
+    const dictionary dict(meshlessTest::dictFrom(constraintsText));
+    const solidConstraints sc(dict, b.set, *b.X0, cube.mesh);
+
+    ASSERT_EQ(sc.size(), 3);
+    EXPECT_EQ(sc.count()[0], 200);      // x = 0.05, 0.15
+    EXPECT_EQ(sc.count()[1], 200);      // x = 0.45, 0.55
+    EXPECT_EQ(sc.count()[2], 200);      // x = 0.85, 0.95
+
+    particleField& x = b.set.positions();
+    particleField& U = b.set.addField("U", particleField::kind::vector);
+    x.fill(7);
+    U.fill(3);
+    sc.prescribe(0.5, *b.X0, x, U);
+
+    scalar loadedMass = 0;
+    label nFree = 0;
+    for (label i = 0; i < b.set.size(); ++i)
+    {
+        const scalar X = (*b.X0)(i, 0);
+        if (X < 0.2)
+        {
+            for (label c = 0; c < 3; ++c)
+            {
+                EXPECT_EQ(x(i, c), (*b.X0)(i, c));
+                EXPECT_EQ(U(i, c), 0);
+            }
+            EXPECT_FALSE(sc.isFree(i));
+        }
+        else if (X > 0.4 && X < 0.6)
+        {
+            EXPECT_NEAR(x(i, 1) - (*b.X0)(i, 1), 0.1, 1e-12);
+            EXPECT_NEAR(U(i, 1), 0.2, 1e-6);       // the table's slope
+            EXPECT_NEAR(U(i, 0), 0, 1e-12);
+            EXPECT_FALSE(sc.isFree(i));
+        }
+        else
+        {
+            EXPECT_EQ(x(i, 0), 7);                // untouched
+            EXPECT_TRUE(sc.isFree(i));
+            ++nFree;
+            if (X > 0.8) loadedMass += b.set.field("mass")(i, 0);
+        }
+    }
+    EXPECT_EQ(nFree, 600);
+
+    // The load: uniform acceleration F/M, so sum m a = F
+    particleField acc("acc", particleField::kind::vector, 3);
+    acc.resize(b.set.size());
+    acc.fill(0);
+    sc.addLoads(2.0, acc);
+    scalar Fz = 0;
+    for (label i = 0; i < b.set.size(); ++i)
+    {
+        Fz += b.set.field("mass")(i, 0)*acc(i, 2);
+        if ((*b.X0)(i, 0) < 0.8) EXPECT_EQ(acc(i, 2), 0);
+    }
+    EXPECT_NEAR(Fz, -30, 1e-12);
+    EXPECT_NEAR(acc(b.set.size() - 1, 2), -30/loadedMass, 1e-12);
+}
+
+
+TEST(solidConstraints, badInputNamesTheConstraint)
+{
+    meshlessTest::unitCube cube(2);
+    auto failure = [&](const std::string& text)
+    {
+        return meshlessTest::fatalMessage([&]()
+        {
+            solidBlock b;
+            const dictionary d(meshlessTest::dictFrom(text));
+            solidConstraints sc(d, b.set, *b.X0, cube.mesh);
+        });
+    };
+
+    const std::string empty = failure
+    (
+        "constraints { nowhere { type clamped;"
+        " region { type box; min (5 5 5); max (6 6 6); } } }"
+    );
+    EXPECT_NE(empty.find("nowhere"), std::string::npos) << empty;
+
+    const std::string kind = failure
+    (
+        "constraints { root { type glued;"
+        " region { type box; min (0 0 0); max (1 1 1); } } }"
+    );
+    EXPECT_NE(kind.find("glued"), std::string::npos) << kind;
+    EXPECT_NE(kind.find("clamped"), std::string::npos) << kind;
+
+    const std::string noForce = failure
+    (
+        "constraints { tip { type load;"
+        " region { type box; min (0 0 0); max (1 1 1); } } }"
+    );
+    EXPECT_NE(noForce.find("force"), std::string::npos) << noForce;
+}
+
+
+// ************************************************************************* //
