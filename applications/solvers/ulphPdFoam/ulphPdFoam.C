@@ -9,13 +9,15 @@ Group
 
 Description
     Updated Lagrangian particle hydrodynamics (ULPH) weakly compressible
-    fluid with fixed ghost walls, after Wang, Xiong, Li, Lai, Liu and Liu,
+    fluid with ghost walls, non-ordinary state-based peridynamic (NOSB-PD)
+    solids, and their coupling, after Wang, Xiong, Li, Lai, Liu and Liu,
     "An updated Lagrangian particle hydrodynamics (ULPH)-NOSBPD coupling
     approach for modeling fluid-structure interaction problem", CMES 2024,
     doi:10.32604/cmes.2024.052923. The fluid model
-    (ulph), the walls (ghostWall) and the effects are selected in
-    constant/particleProperties. The peridynamic solid and its coupling
-    arrive with the solid model.
+    (ulph), the walls (ghostWall), the solids (nosbPd), the effects and the
+    fluid-structure coupling (coupling { type ulphPd; ... }) are selected in
+    constant/particleProperties; a scene without a coupling advances each
+    body on its own.
 
 Usage
     \b ulphPdFoam [-case dir]
@@ -34,7 +36,7 @@ int main(int argc, char *argv[])
 {
     argList::addNote
     (
-        "ULPH fluid (and, to come, NOSB peridynamic solid) particle solver"
+        "ULPH fluid, NOSB peridynamic solid and their coupling"
     );
     #include "setRootCase.H"
     #include "runScene.H"

@@ -69,6 +69,10 @@ Foam::meshless::particleScene::particleScene(const polyMesh& mesh)
     {
         b.model().connect(*this);
     }
+    if (dict_.found("coupling"))
+    {
+        coupling_ = fsiCoupling::New(dict_.subDict("coupling"), *this);
+    }
 
     if (dict_.found("monitors"))
     {
@@ -130,7 +134,12 @@ Foam::scalar Foam::meshless::particleScene::maxDeltaT(const scalar maxCo) const
     scalar dt = GREAT;
     for (const particleBody& b : bodies_)
     {
+        if (coupling_.valid() && coupling_->couples(b)) continue;
         dt = min(dt, b.maxDeltaT(maxCo));
+    }
+    if (coupling_.valid())
+    {
+        dt = min(dt, coupling_->maxDeltaT(maxCo));
     }
     return dt;
 }
@@ -140,7 +149,12 @@ void Foam::meshless::particleScene::advance(const scalar t, const scalar dt)
 {
     for (particleBody& b : bodies_)
     {
+        if (coupling_.valid() && coupling_->couples(b)) continue;
         if (b.model().moves()) b.advance(t, dt, costs_);
+    }
+    if (coupling_.valid())
+    {
+        coupling_->advance(t, dt, costs_);
     }
 }
 
@@ -254,6 +268,7 @@ void Foam::meshless::particleScene::describe(Ostream& os) const
     {
         b.describe(os);
     }
+    if (coupling_.valid()) coupling_->describe(os);
     if (vtp_) os << "    output: lagrangian clouds and VTK .vtp" << nl;
     os  << endl;
     os.precision(oldPrecision);

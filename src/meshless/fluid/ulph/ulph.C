@@ -5,6 +5,7 @@
 #include "ulph.H"
 #include "ulphEquations.H"
 #include "ghostWall.H"
+#include "ghostBoundary.H"
 #include "particleScene.H"
 #include "effect.H"
 #include "gravity.H"
@@ -118,22 +119,7 @@ void Foam::meshless::bodyModels::ulph::connect(particleScene& scene)
                 << wb.dict().get<word>("model") << ": expected ghostWall"
                 << exit(FatalIOError);
         }
-        wall->prepare(W);
-        walls_.push_back(wall);
-        wallBodies_.push_back(&wb);
-
-        // Walls do not move: their cell lists are built once
-        wallCells_.emplace_back
-        (
-            new cellLinkedList(dim, W.radius()*(1 + skin_))
-        );
-        wallCells_.back()->build
-        (
-            wb.particles().positions().data(),
-            wb.particles().size()
-        );
-        toWall_.emplace_back(new neighbourList());
-        fromWall_.emplace_back(new neighbourList());
+        attach(*wall);
     }
     cells_.reset(new cellLinkedList(dim, W.radius()*(1 + skin_)));
 
@@ -206,6 +192,82 @@ void Foam::meshless::bodyModels::ulph::hydrostaticStart()
         const scalar p = rho0_*mag(g_)*(top - height(i));
         rho_(i, 0) = ulphEquations::taitDensity(p, rho0_, c0_, gamma_);
         mass_(i, 0) = rho_(i, 0)*V0_(i, 0);
+    }
+}
+
+
+void Foam::meshless::bodyModels::ulph::attach(ghostBoundary& ghosts)
+{
+    const smoothingKernel& W = body_.kernel();
+    particleBody& gb = ghosts.ghostBody();
+    if (gb.dim() != body_.dim())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Ghost body '" << gb.name() << "' is " << gb.dim()
+            << "D, the fluid " << body_.name() << " " << body_.dim() << "D"
+            << exit(FatalIOError);
+    }
+    ghosts.prepare(W);
+    walls_.push_back(&ghosts);
+    wallBodies_.push_back(&gb);
+    ghostForce_.push_back(Zero);
+
+    // Fixed ghosts: their cell lists are built once
+    wallCells_.emplace_back
+    (
+        new cellLinkedList(body_.dim(), W.radius()*(1 + skin_))
+    );
+    wallCells_.back()->build
+    (
+        gb.particles().positions().data(),
+        gb.particles().size()
+    );
+    toWall_.emplace_back(new neighbourList());
+    fromWall_.emplace_back(new neighbourList());
+}
+
+
+void Foam::meshless::bodyModels::ulph::addGhosts(ghostBoundary& ghosts)
+{
+    attach(ghosts);
+}
+
+
+Foam::vector Foam::meshless::bodyModels::ulph::ghostForceOnFluid
+(
+    const ghostBoundary& ghosts
+) const
+{
+    for (size_t k = 0; k < walls_.size(); ++k)
+    {
+        if (walls_[k] == &ghosts) return ghostForce_[k];
+    }
+    FatalErrorInFunction
+        << "Fluid " << body_.name() << " has no such ghost set"
+        << exit(FatalError);
+    return Zero;
+}
+
+
+template<int Dim>
+void Foam::meshless::bodyModels::ulph::ghostForces()
+{
+    const double* x = body_.particles().positions().data();
+    for (size_t k = 0; k < walls_.size(); ++k)
+    {
+        double* R = walls_[k]->reaction();
+        if (!R) continue;
+        const particleSet& gs = wallBodies_[k]->particles();
+        ghostForce_[k] = ulphEquations::ghostForceOnFluid<Dim>
+        (
+            ctx_.n, x, V_.data(), S_.data(), ctx_.sources[k + 1],
+            Ssrc_[k + 1], body_.kernel()
+        );
+        ulphEquations::reactionOnGhosts<Dim>
+        (
+            gs.size(), gs.positions().data(), walls_[k]->V(), Ssrc_[k + 1],
+            *fromWall_[k], x, V_.data(), S_.data(), body_.kernel(), R
+        );
     }
 }
 
@@ -323,7 +385,7 @@ void Foam::meshless::bodyModels::ulph::evaluate
     double* V = V_.data();
     const double* m = mass_.data();
 
-    for (ghostWall* wall : walls_) wall->moveTo(t);
+    for (ghostBoundary* wall : walls_) wall->moveTo(t);
 
     #pragma omp parallel for schedule(static)
     for (label i = 0; i < n; ++i)
@@ -372,6 +434,8 @@ void Foam::meshless::bodyModels::ulph::evaluate
         n, x, rho, S_.data(), ctx_.sources, Ssrc_, W, dU_.data()
     );
 
+    ghostForces<Dim>();
+
     body_.addEffectAccelerations(t, dU_, costs);
     body_.addPairEffectAccelerations(ctx_, dU_, costs);
 }
@@ -411,7 +475,7 @@ void Foam::meshless::bodyModels::ulph::advance
     costAccounting& costs
 )
 {
-    for (ghostWall* wall : walls_) wall->moveTo(t);
+    for (ghostBoundary* wall : walls_) wall->moveTo(t);
     {
         costAccounting::scope timer(costs, neighbourCost_);
         buildNeighbours();
@@ -456,7 +520,7 @@ void Foam::meshless::bodyModels::ulph::advance
     }
 
     // Walls at the end of the step, as written
-    for (ghostWall* wall : walls_) wall->moveTo(t + dt);
+    for (ghostBoundary* wall : walls_) wall->moveTo(t + dt);
 
     setContext();
     body_.correctEffects(ctx_, time_->timeIndex(), costs);

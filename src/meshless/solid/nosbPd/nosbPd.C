@@ -64,6 +64,10 @@ Foam::meshless::bodyModels::nosbPd::nosbPd
     P_(body.particles().addScratchField("P", particleField::kind::tensor)),
     m_(body.particles().addScratchField("weightedVolume", particleField::kind::scalar)),
     Ws_(body.particles().addScratchField("Ws", particleField::kind::scalar)),
+    fExt_
+    (
+        body.particles().addScratchField("externalForce", particleField::kind::vector)
+    ),
     resolved_(body.particles().size(), 1),
     law_(constitutiveLaw::New(dict, body.dim(), body.particles())),
     nSingular_(0)
@@ -195,6 +199,10 @@ void Foam::meshless::bodyModels::nosbPd::evaluate
     const label nv = n*Dim;
     #pragma omp parallel for schedule(static)
     for (label k = 0; k < nv; ++k) a[k] /= rho0_;
+    const double* fExt = fExt_.data();
+    const double* V0 = V0_.data();
+    #pragma omp parallel for schedule(static)
+    for (label k = 0; k < nv; ++k) a[k] += fExt[k]/(rho0_*V0[k/Dim]);
 
     constraints_->addLoads(t, acc_);
     body_.addEffectAccelerations(t, acc_, costs);

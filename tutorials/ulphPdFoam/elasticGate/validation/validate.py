@@ -1,0 +1,157 @@
+#!/usr/bin/python3
+"""Elastic gate (Antoci et al. 2007): free-end displacement vs experiment.
+
+Reads the free end's displacement written by the pointDisplacement monitor
+'freeEnd' (postProcessing/freeEnd/0/freeEnd.dat), interpolates it linearly
+to the experiment's times (validation/antoci2007_freeEnd.dat) and prints the
+RMS error of x(t) and y(t) over the experiment's points inside the run.
+For scale, the RMS of the published numerical curves against the same
+points (computed from the digitised curves of Ng et al. 2020 listed in
+README.md): x 8.3 mm (Khayyer 2018 ISPH-SPH) to 10.8 mm (Ng 2020 SPH-VCPM),
+y 4.6 mm to 5.7 mm; the target (BENCHMARKS) is an RMS of x below those.
+
+Writes validation/result.md (or result-dx<spacing>.md for a spacing other
+than the tutorial's 2.5 mm) with the errors, peaks, particles, steps and
+wall time from log.ulphPdFoam, and freeEnd[-dx<spacing>].png.
+
+Usage: validate.py <case>
+"""
+import math
+import os
+import re
+import sys
+
+here = os.path.dirname(os.path.abspath(__file__))
+DEFAULT_DX = 0.0025
+PUBLISHED_X = 0.0083    # best published RMS of x [m] (Khayyer 2018)
+
+
+def read_table(path):
+    rows = []
+    with open(path) as f:
+        for line in f:
+            if line.startswith("#") or not line.strip():
+                continue
+            rows.append(line.split())
+    return rows
+
+
+def interp(t, ts, vs):
+    if t <= ts[0]:
+        return vs[0]
+    for k in range(1, len(ts)):
+        if t <= ts[k]:
+            a = (t - ts[k - 1]) / (ts[k] - ts[k - 1])
+            return vs[k - 1] + a * (vs[k] - vs[k - 1])
+    return vs[-1]
+
+
+def spacing(case):
+    res = os.path.join(case, "system", "resolution")
+    if os.path.exists(res):
+        m = re.search(r"dx\s+([0-9.eE+-]+)", open(res).read())
+        if m:
+            return float(m.group(1))
+    return DEFAULT_DX
+
+
+def run_cost(case):
+    log = open(os.path.join(case, "log.ulphPdFoam")).read()
+    steps = len(re.findall(r"^deltaT = ", log, re.M))
+    particles = re.findall(r"particles = (\d+)", log)
+    clock = re.findall(r"ClockTime = (\d+) s", log)
+    sub = re.findall(r"(\d+) solid sub-steps per fluid step", log)
+    return (steps, int(particles[-1]) if particles else 0,
+            int(clock[-1]) if clock else 0, max(map(int, sub)) if sub else 1)
+
+
+def main():
+    if len(sys.argv) < 2:
+        print(__doc__)
+        return 2
+    case = sys.argv[1]
+    sim = [list(map(float, r)) for r in read_table(
+        os.path.join(case, "postProcessing", "freeEnd", "0", "freeEnd.dat"))]
+    ts = [r[0] for r in sim]
+    dx_sim = [r[1] for r in sim]
+    dy_sim = [r[2] for r in sim]
+    ref = read_table(os.path.join(here, "antoci2007_freeEnd.dat"))
+
+    errors = {}
+    for q, series in (("x", dx_sim), ("y", dy_sim)):
+        pts = [(float(t), float(v)) for k, t, v in ref
+               if k == q and 0 < float(t) <= ts[-1]]
+        sq = [(interp(t, ts, series) - v) ** 2 for t, v in pts]
+        errors[q] = (math.sqrt(sum(sq) / len(sq)) if sq else float("nan"),
+                     len(sq))
+
+    steps, particles, clock, sub = run_cost(case)
+    dx = spacing(case)
+    peak_x = max(dx_sim)
+    peak_y = max(dy_sim)
+    t_peak = ts[dx_sim.index(peak_x)]
+    lines = [
+        "RMS of free-end x(t) vs Antoci 2007: %.4f m over %d points"
+        % errors["x"],
+        "RMS of free-end y(t) vs Antoci 2007: %.4f m over %d points"
+        % errors["y"],
+        "peak x %.4f m at %.3f s (experiment 0.0464 m at 0.16 s),"
+        " peak y %.4f m (experiment 0.0171 m)" % (peak_x, t_peak, peak_y),
+    ]
+    complete = ts[-1] >= 0.36
+    if complete:
+        lines.append("x RMS %s the best published numerical curve's (%.4f m)"
+                     % ("below" if errors["x"][0] < PUBLISHED_X else "above",
+                        PUBLISHED_X))
+    if not complete:
+        lines.insert(0, "INCOMPLETE: the run stopped at %.3f s, before the"
+                     " experiment's last point (0.36 s); errors over the"
+                     " points up to there only" % ts[-1])
+    for line in lines:
+        print(line)
+
+    suffix = "" if abs(dx - DEFAULT_DX) < 1e-12 else "-dx%g" % dx
+    with open(os.path.join(here, "result%s.md" % suffix), "w") as f:
+        f.write("# elasticGate: free-end displacement vs Antoci et al. 2007\n\n")
+        f.write("Spacing %g m (gate %d particles thick), run to %.3f s.\n\n"
+                % (dx, round(0.005 / dx), ts[-1]))
+        if not complete:
+            f.write("**INCOMPLETE**: %s.\n\n" % lines[0].split(": ", 1)[1])
+        f.write("| quantity | value |\n|---|---|\n")
+        f.write("| RMS error x(t) | %.4f m (%d points) |\n" % errors["x"])
+        f.write("| RMS error y(t) | %.4f m (%d points) |\n" % errors["y"])
+        f.write("| peak x | %.4f m at %.3f s (experiment 0.0464 m at 0.16 s)"
+                " |\n" % (peak_x, t_peak))
+        f.write("| peak y | %.4f m (experiment 0.0171 m) |\n" % peak_y)
+        f.write("| best published RMS x (Khayyer 2018) | %.4f m |\n"
+                % PUBLISHED_X)
+        f.write("| particles | %d |\n| fluid steps | %d |\n" % (particles,
+                                                            steps))
+        f.write("| solid sub-steps per fluid step (max) | %d |\n" % sub)
+        f.write("| wall time | %d s (2 shared cores, OMP_NUM_THREADS=1) |\n"
+                % clock)
+
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("matplotlib not found: no plot")
+        return 0
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+    for ax, q, series in ((axes[0], "x", dx_sim), (axes[1], "y", dy_sim)):
+        rt = [float(t) for k, t, v in ref if k == q]
+        rv = [float(v) for k, t, v in ref if k == q]
+        ax.plot(ts, series, "-", label="ulphPdFoam, dx = %g m" % dx)
+        ax.plot(rt, rv, "o", label="Antoci et al. 2007 (experiment)")
+        ax.set_xlabel("t [s]")
+        ax.set_ylabel("free-end %s displacement [m]" % q)
+        ax.grid(True)
+        ax.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(here, "freeEnd%s.png" % suffix), dpi=100)
+    return 0 if complete else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
