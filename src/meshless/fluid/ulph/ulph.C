@@ -71,8 +71,32 @@ Foam::meshless::bodyModels::ulph::ulph
     mu_(0),
     viscosityEffect_(nullptr),
     neighbourCost_(-1),
-    nDegenerate_(0)
+    nDegenerate_(0),
+    maxDegenerate_(0),
+    floorRatio_(dict.getOrDefault<scalar>("shapeTensorFloor", 0.1)),
+    lambdaFloor_(0),
+    rhoMin_(0)
 {
+    if (dict.found("minPressure"))
+    {
+        // The Tait pressure is bounded below by -B (B = rho0 c0^2/gamma)
+        const scalar B = rho0_*c0_*c0_/gamma_;
+        const scalar pMin = dict.get<scalar>("minPressure");
+        if (pMin <= -B)
+        {
+            FatalIOErrorInFunction(dict)
+                << "minPressure " << pMin << ": expected a pressure above"
+                << " -rho0 c0^2/gamma = " << -B << " Pa" << exit(FatalIOError);
+        }
+        rhoMin_ = ulphEquations::taitDensity(pMin, rho0_, c0_, gamma_);
+    }
+    if (floorRatio_ < 0 || floorRatio_ >= 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "shapeTensorFloor " << floorRatio_ << ": expected a fraction"
+            << " of the full support's eigenvalue, 0 <= value < 1 (0: off)"
+            << exit(FatalIOError);
+    }
     body.kernel();      // required: FatalIOError naming the body if absent
 
     // A cloud seeded without density starts at the reference density
@@ -122,6 +146,12 @@ void Foam::meshless::bodyModels::ulph::connect(particleScene& scene)
         attach(*wall);
     }
     cells_.reset(new cellLinkedList(dim, W.radius()*(1 + skin_)));
+    lambdaFloor_ = floorRatio_*
+    (
+        dim == 3
+      ? ulphOperators::fullSupportEigenvalue<3>(W, body_.spacing())
+      : ulphOperators::fullSupportEigenvalue<2>(W, body_.spacing())
+    );
 
     // Sound speed against eq. 7 for the column the fluid starts as
     const scalar gMag = mag(g_);
@@ -407,8 +437,15 @@ void Foam::meshless::bodyModels::ulph::evaluate
 
     nDegenerate_ = ulphOperators::shapeTensorInverse<Dim>
     (
-        x, n, ctx_.sources, W, Minv_
+        x, n, ctx_.sources, W, Minv_, lambdaFloor_
     );
+    if (nDegenerate_ > maxDegenerate_)
+    {
+        maxDegenerate_ = nDegenerate_;
+        Info<< "    ulph " << body_.name() << ": " << nDegenerate_
+            << " particles with a shape tensor at its floor or singular"
+            << " (most so far)" << endl;
+    }
 
     if (tau_)
     {
@@ -500,7 +537,10 @@ void Foam::meshless::bodyModels::ulph::advance
     // Predictor (eq. 56, left)
     evaluateDim(t, costs);
     #pragma omp parallel for schedule(static)
-    for (label i = 0; i < n; ++i) rho[i] = rho0[i] + 0.5*dt*drho[i];
+    for (label i = 0; i < n; ++i)
+    {
+        rho[i] = std::max(rho0[i] + 0.5*dt*drho[i], rhoMin_);
+    }
     #pragma omp parallel for schedule(static)
     for (label k = 0; k < nv; ++k)
     {
@@ -511,7 +551,10 @@ void Foam::meshless::bodyModels::ulph::advance
     // Corrector (eq. 56, right)
     evaluateDim(t + 0.5*dt, costs);
     #pragma omp parallel for schedule(static)
-    for (label i = 0; i < n; ++i) rho[i] = rho0[i] + dt*drho[i];
+    for (label i = 0; i < n; ++i)
+    {
+        rho[i] = std::max(rho0[i] + dt*drho[i], rhoMin_);
+    }
     #pragma omp parallel for schedule(static)
     for (label k = 0; k < nv; ++k)
     {
