@@ -41,6 +41,29 @@ def run_cost(log_file):
     }
 
 
+def case_spacing(case, default):
+    """The particle spacing a tutorial's Allrun -dx wrote into
+    system/resolution ('dx <value>;'), or the tutorial's default"""
+    res = os.path.join(case, "system", "resolution")
+    if os.path.exists(res):
+        m = re.search(r"dx\s+([0-9.eE+-]+)", open(res).read())
+        if m:
+            return float(m.group(1))
+    return default
+
+
+def interp(t, ts, vs):
+    """Linear interpolation of the series (ts, vs) at t, held constant
+    beyond its ends"""
+    if t <= ts[0]:
+        return vs[0]
+    for k in range(1, len(ts)):
+        if t <= ts[k]:
+            a = (t - ts[k - 1]) / (ts[k] - ts[k - 1])
+            return vs[k - 1] + a * (vs[k] - vs[k - 1])
+    return vs[-1]
+
+
 def dictionary_entry(case, key, dictionary="constant/particleProperties"):
     """An entry of a case dictionary ('/'-scoped key, e.g. bodies/beam/density)
     with its $variables and #eval expanded, read through foamDictionary"""

@@ -22,6 +22,11 @@ import re
 import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
+project = os.environ.get("MESHLESS_PROJECT",
+                         os.path.join(here, "..", "..", "..", ".."))
+sys.path.insert(0, os.path.join(project, "etc", "python"))
+from foamMonitor import case_spacing, interp  # noqa: E402
+
 DEFAULT_DX = 0.0025
 PUBLISHED_X = 0.0083    # best published RMS of x [m] (Khayyer 2018)
 
@@ -36,23 +41,6 @@ def read_table(path):
     return rows
 
 
-def interp(t, ts, vs):
-    if t <= ts[0]:
-        return vs[0]
-    for k in range(1, len(ts)):
-        if t <= ts[k]:
-            a = (t - ts[k - 1]) / (ts[k] - ts[k - 1])
-            return vs[k - 1] + a * (vs[k] - vs[k - 1])
-    return vs[-1]
-
-
-def spacing(case):
-    res = os.path.join(case, "system", "resolution")
-    if os.path.exists(res):
-        m = re.search(r"dx\s+([0-9.eE+-]+)", open(res).read())
-        if m:
-            return float(m.group(1))
-    return DEFAULT_DX
 
 
 def run_cost(case):
@@ -86,7 +74,7 @@ def main():
                      len(sq))
 
     steps, particles, clock, sub = run_cost(case)
-    dx = spacing(case)
+    dx = case_spacing(case, DEFAULT_DX)
     peak_x = max(dx_sim)
     peak_y = max(dy_sim)
     t_peak = ts[dx_sim.index(peak_x)]
