@@ -8,7 +8,11 @@ Description
     displacement table moves its particles by d(t) with velocity d'(t); a
     load table is shared in proportion to mass (sum of m a = F(t)); only
     loaded and unconstrained particles are free; bad input names the
-    constraint or keyword.
+    constraint or keyword. On a face: clamped particles take minus their
+    mirror images' displacement and velocity (the displacement of the odd
+    extension vanishes on the face), a load's resultant acts on the face
+    (sum m a = F, first moment at the face) through moving least squares
+    weights.
 
 \*---------------------------------------------------------------------------*/
 
@@ -16,6 +20,7 @@ Description
 #include "testHelpers.H"
 #include "unitCube.H"
 #include "solidConstraints.H"
+#include "smoothingKernel.H"
 
 using namespace Foam;
 using namespace Foam::meshless;
@@ -45,8 +50,20 @@ struct solidBlock
         for (label i = 0; i < set.size(); ++i) m(i, 0) = 1 + 0.01*(i % 7);
         X0 = &set.addField("X0", particleField::kind::vector);
         std::copy(pos.data(), pos.data() + 3*set.size(), X0->data());
+        set.addField("volume", particleField::kind::scalar).fill(1e-3);
     }
 };
+
+
+autoPtr<smoothingKernel> blockKernel()
+{
+    return smoothingKernel::New
+    (
+        meshlessTest::dictFrom("type cubicSpline; smoothingLengthRatio 1.2;"),
+        3,
+        0.1
+    );
+}
 
 const char* constraintsText =
     "constraints"
@@ -131,6 +148,109 @@ TEST(solidConstraints, eachKindOnItsParticles)
     }
     EXPECT_NEAR(Fz, -30, 1e-12);
     EXPECT_NEAR(acc(b.set.size() - 1, 2), -30/loadedMass, 1e-12);
+}
+
+
+TEST(solidConstraints, onAFace)
+{
+    meshlessTest::unitCube cube(4);
+    solidBlock b;
+    const autoPtr<smoothingKernel> W = blockKernel();
+    const dictionary dict(meshlessTest::dictFrom
+    (
+        "constraints"
+        "{"
+        "    root"
+        "    {"
+        "        type clamped;"
+        "        region { type box; min (-1 -1 -1); max (0.2 2 2); }"
+        "        face { point (0.2 0 0); normal (-2 0 0); }"
+        "    }"
+        "    tip"
+        "    {"
+        "        type load;"
+        "        region { type box; min (0.8 -1 -1); max (2 2 2); }"
+        "        face { point (1 0 0); normal (1 0 0); }"
+        "        force table ((0 (0 0 0)) (1 (0 6 -30)) (5 (0 6 -30)));"
+        "    }"
+        "}"
+    ));
+    const solidConstraints sc(dict, b.set, *b.X0, cube.mesh, &W());
+
+    // Any motion of the free particles: the clamped ones (x = 0.05, 0.15)
+    // mirror those at x = 0.35, 0.25 with the opposite displacement
+    particleField& x = b.set.positions();
+    particleField& U = b.set.addField("U", particleField::kind::vector);
+    for (label i = 0; i < b.set.size(); ++i)
+    {
+        for (label c = 0; c < 3; ++c)
+        {
+            x(i, c) = (*b.X0)(i, c) + 0.01*std::sin(7*i + c);
+            U(i, c) = std::cos(3*i + c);
+        }
+    }
+    sc.prescribe(0.5, *b.X0, x, U);
+    label nMirrored = 0;
+    for (label i = 0; i < b.set.size(); ++i)
+    {
+        if ((*b.X0)(i, 0) > 0.2) continue;
+        ++nMirrored;
+        EXPECT_FALSE(sc.isFree(i));
+        for (label j = 0; j < b.set.size(); ++j)
+        {
+            if
+            (
+                std::abs((*b.X0)(j, 0) - (0.4 - (*b.X0)(i, 0))) < 1e-9
+             && std::abs((*b.X0)(j, 1) - (*b.X0)(i, 1)) < 1e-9
+             && std::abs((*b.X0)(j, 2) - (*b.X0)(i, 2)) < 1e-9
+            )
+            {
+                for (label c = 0; c < 3; ++c)
+                {
+                    EXPECT_NEAR
+                    (
+                        x(i, c) - (*b.X0)(i, c),
+                      -(x(j, c) - (*b.X0)(j, c)),
+                        1e-15
+                    );
+                    EXPECT_EQ(U(i, c), -U(j, c));
+                }
+            }
+        }
+    }
+    EXPECT_EQ(nMirrored, 200);
+
+    // The load: the force F in total, its resultant on the face x = 1
+    particleField acc("acc", particleField::kind::vector, 3);
+    acc.resize(b.set.size());
+    acc.fill(0);
+    sc.addLoads(2.0, acc);
+    const particleField& m = b.set.field("mass");
+    scalar Fy = 0, Fz = 0, Mz = 0;
+    for (label i = 0; i < b.set.size(); ++i)
+    {
+        Fy += m(i, 0)*acc(i, 1);
+        Fz += m(i, 0)*acc(i, 2);
+        Mz += m(i, 0)*acc(i, 2)*(*b.X0)(i, 0);
+    }
+    EXPECT_NEAR(Fy, 6, 1e-10);
+    EXPECT_NEAR(Fz, -30, 1e-10);
+    EXPECT_NEAR(Mz/Fz, 1.0, 1e-10);     // not 0.9, the loaded particles'
+
+    // No particle at a clamped particle's mirror image: an error naming it
+    const std::string noImage = meshlessTest::fatalMessage([&]()
+    {
+        solidBlock c;
+        const dictionary d(meshlessTest::dictFrom
+        (
+            "constraints { root { type clamped;"
+            " region { type box; min (-1 -1 -1); max (0.2 2 2); }"
+            " face { point (0.23 0 0); normal (1 0 0); } } }"
+        ));
+        solidConstraints sc(d, c.set, *c.X0, cube.mesh, &W());
+    });
+    EXPECT_NE(noImage.find("mirror image"), std::string::npos) << noImage;
+    EXPECT_NE(noImage.find("root"), std::string::npos) << noImage;
 }
 
 

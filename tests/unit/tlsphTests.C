@@ -14,7 +14,11 @@ Description
       random deformation; a uniform stretch leaves interior particles
       force-free (patch test);
     - the checkerboard displacement is a zero-energy mode (F = I, no
-      restoring force) that the hourglass control resists.
+      restoring force) that the hourglass control resists;
+    - gradientOrder 2: F exact for quadratic maps at every particle,
+      boundary included (order 1 is not at the boundary); the force is
+      eq. 42 for order 1 and minus the gradient of sum_a V_a W(F_a) for
+      order 2 too.
 
 \*---------------------------------------------------------------------------*/
 
@@ -41,8 +45,15 @@ struct block
     autoPtr<smoothingKernel> W;
     neighbourList pairs;
     std::vector<double> vgradW, corrGradW, Wab, KinvT;
+    std::vector<label> rev;
 
-    block(const label nPerSide, const double dx, const double jitter)
+    block
+    (
+        const label nPerSide,
+        const double dx,
+        const double jitter,
+        const label order = 1
+    )
     {
         X = meshlessTest::latticePoints(Dim, nPerSide, dx);
         std::mt19937_64 gen(5);
@@ -61,9 +72,11 @@ struct block
         pairs.build(cells, X.data(), n, true);
         const label singular = tlsphOperators::reference<Dim>
         (
-            pairs, W(), X.data(), V.data(), vgradW, corrGradW, Wab, KinvT
+            pairs, W(), X.data(), V.data(), vgradW, corrGradW, Wab, KinvT,
+            order
         );
         EXPECT_EQ(singular, -1);
+        rev = tlsphOperators::reversePairs(pairs);
     }
 
     std::vector<double> F(const std::vector<double>& x) const
@@ -104,7 +117,7 @@ struct block
     ) const
     {
         const std::vector<double> Fv = F(x);
-        std::vector<double> A(n*Dim*Dim), f(n*Dim);
+        std::vector<double> P(n*Dim*Dim), f(n*Dim);
         for (label a = 0; a < n; ++a)
         {
             tensor Fa(tensor::I);
@@ -115,15 +128,12 @@ struct block
                     Fa[3*i + j] = Fv[(a*Dim + i)*Dim + j];
                 }
             }
-            const tensor P = law.stress(a, Fa, Fa);
-            tlsphOperators::stressTimesKinvT<Dim>
-            (
-                P.cdata(), KinvT.data() + a*Dim*Dim, A.data() + a*Dim*Dim
-            );
+            const tensor Pa = law.stress(a, Fa, Fa);
+            tlsphOperators::stressDim<Dim>(Pa.cdata(), P.data() + a*Dim*Dim);
         }
         tlsphOperators::internalForce<Dim>
         (
-            pairs, vgradW.data(), V.data(), A.data(), f.data()
+            pairs, corrGradW.data(), rev.data(), V.data(), P.data(), f.data()
         );
         if (hourglass > 0)
         {
@@ -359,7 +369,9 @@ TEST(tlsph, momentumConservedForAFreeBody)
 {
     // A random deformation of a free block: the internal forces (and the
     // hourglass forces) sum to zero, and so do their moments
-    const block<2> b(10, 0.01, 0.1);
+    for (const label order : {1, 2})
+    {
+    const block<2> b(10, 0.01, 0.1, order);
     std::mt19937_64 gen(11);
     std::uniform_real_distribution<double> u(-0.002, 0.002);
     const double A[] = {1.05, 0.2, -0.1, 0.97};
@@ -384,6 +396,7 @@ TEST(tlsph, momentumConservedForAFreeBody)
         EXPECT_LT(std::abs(fx)/scale, 1e-13) << "hourglass " << hg;
         EXPECT_LT(std::abs(fy)/scale, 1e-13) << "hourglass " << hg;
         EXPECT_LT(std::abs(torque)/tscale, 1e-12) << "hourglass " << hg;
+    }
     }
 }
 
@@ -458,6 +471,158 @@ TEST(tlsph, checkerboardIsAZeroEnergyModeThatHourglassControlResists)
     EXPECT_LT(fFree/scale, 1e-10);     // nothing resists the mode
     EXPECT_GT(fHeld/scale, 1e-2);      // the hourglass force does...
     EXPECT_LT(work, 0);                // ...against the mode
+}
+
+
+namespace
+{
+
+//- Max error of F at the boundary and inside for x = X + Q(X), a
+//  quadratic map, with the given order
+template<int Dim>
+std::pair<double, double> quadraticFError(const label order)
+{
+    const label nSide = Dim == 2 ? 12 : 7;
+    const double dx = 0.01;
+    const block<Dim> b(nSide, dx, 0.2, order);
+    std::vector<double> x(b.X);
+    const double q = 2.0;       // 1/m: strains of order q*L = 0.2
+    for (label a = 0; a < b.n; ++a)
+    {
+        const double* X = b.X.data() + a*Dim;
+        x[a*Dim] += q*X[0]*X[1];
+        x[a*Dim + 1] += 0.5*q*(X[0]*X[0] - X[1]*X[1]);
+        if (Dim == 3) x[a*Dim + 2] += q*X[1]*X[2];
+    }
+    const std::vector<double> F = b.F(x);
+    double boundary = 0, inside = 0;
+    for (label a = 0; a < b.n; ++a)
+    {
+        const double* X = b.X.data() + a*Dim;
+        double Fx[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+        Fx[0][0] += q*X[1];
+        Fx[0][1] += q*X[0];
+        Fx[1][0] += q*X[0];
+        Fx[1][1] -= q*X[1];
+        if (Dim == 3)
+        {
+            Fx[2][1] += q*X[2];
+            Fx[2][2] += q*X[1];
+        }
+        double err = 0;
+        for (int i = 0; i < Dim; ++i)
+        {
+            for (int j = 0; j < Dim; ++j)
+            {
+                err = max(err, std::abs(F[(a*Dim + i)*Dim + j] - Fx[i][j]));
+            }
+        }
+        if (b.interior(a, dx, nSide)) inside = max(inside, err);
+        else boundary = max(boundary, err);
+    }
+    return {boundary, inside};
+}
+
+} // End anonymous namespace
+
+
+TEST(tlsph, order2DeformationGradientExactForQuadraticMaps)
+{
+    // Order 1 (eq. 36) is biased at the boundary by O(q h), order 2 is
+    // exact there too (perturbed particles, 2D and 3D)
+    const auto o1 = quadraticFError<2>(1);
+    EXPECT_GT(o1.first, 1e-3);
+    EXPECT_LT(quadraticFError<2>(2).first, 1e-10);
+    EXPECT_LT(quadraticFError<2>(2).second, 1e-10);
+    EXPECT_LT(quadraticFError<3>(2).first, 1e-10);
+    EXPECT_LT(quadraticFError<3>(2).second, 1e-10);
+}
+
+
+TEST(tlsph, internalForceIsEq42AndTheEnergyGradient)
+{
+    const autoPtr<constitutiveLaw> L =
+        law("type stVenantKirchhoff; E 1e6; nu 0.3; plane strain;", 2);
+    std::mt19937_64 gen(3);
+    std::uniform_real_distribution<double> u(-0.001, 0.001);
+    const double A[] = {1.04, 0.1, -0.05, 0.98};
+
+    // Order 1: eq. 42 as the paper writes it,
+    // V_a sum_b V_b (P_a K_a^-T + P_b K_b^-T) grad0 W_ab
+    {
+        const block<2> b(8, 0.01, 0.1, 1);
+        std::vector<double> x = affine(b, A);
+        for (auto& v : x) v += u(gen);
+        const std::vector<double> f = b.force(x, L(), 0);
+        const std::vector<double> Fv = b.F(x);
+        std::vector<tensor> PK(b.n);
+        for (label a = 0; a < b.n; ++a)
+        {
+            const tensor Fa
+            (
+                Fv[4*a], Fv[4*a + 1], 0, Fv[4*a + 2], Fv[4*a + 3], 0, 0, 0, 1
+            );
+            const tensor Ki
+            (
+                b.KinvT[4*a], b.KinvT[4*a + 1], 0,
+                b.KinvT[4*a + 2], b.KinvT[4*a + 3], 0, 0, 0, 1
+            );
+            PK[a] = L->stress(a, Fa, Fa) & Ki;
+        }
+        double err = 0, scale = 0;
+        for (label a = 0; a < b.n; ++a)
+        {
+            vector fa(Zero);
+            for (label p = b.pairs.offset(a); p < b.pairs.offset(a + 1); ++p)
+            {
+                const label c = b.pairs.indexData()[p];
+                const vector g(b.vgradW[2*p], b.vgradW[2*p + 1], 0);
+                fa += b.V[a]*((PK[a] + PK[c]) & g);
+            }
+            err = max(err, mag(fa - vector(f[2*a], f[2*a + 1], 0)));
+            scale = max(scale, mag(fa));
+        }
+        EXPECT_LT(err/scale, 1e-12);
+    }
+
+    // Both orders: f_a = -d/dx_a sum_c V_c W(F_c) (central differences)
+    for (const label order : {1, 2})
+    {
+        const block<2> b(8, 0.01, 0.1, order);
+        std::vector<double> x = affine(b, A);
+        for (auto& v : x) v += u(gen);
+        const std::vector<double> f = b.force(x, L(), 0);
+        auto energy = [&](const std::vector<double>& y)
+        {
+            const std::vector<double> Fv = b.F(y);
+            double E = 0;
+            for (label a = 0; a < b.n; ++a)
+            {
+                const tensor Fa
+                (
+                    Fv[4*a], Fv[4*a + 1], 0, Fv[4*a + 2], Fv[4*a + 3],
+                    0, 0, 0, 1
+                );
+                E += b.V[a]*L->energyDensity(a, Fa);
+            }
+            return E;
+        };
+        double err = 0, scale = 0;
+        const double e = 1e-7;
+        for (label a = 0; a < b.n; a += 5)
+        {
+            for (int i = 0; i < 2; ++i)
+            {
+                std::vector<double> xp(x), xm(x);
+                xp[2*a + i] += e;
+                xm[2*a + i] -= e;
+                const double fd = -(energy(xp) - energy(xm))/(2*e);
+                err = max(err, std::abs(fd - f[2*a + i]));
+                scale = max(scale, std::abs(f[2*a + i]));
+            }
+        }
+        EXPECT_LT(err/scale, 1e-5) << "order " << order;
+    }
 }
 
 

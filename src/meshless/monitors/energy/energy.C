@@ -110,6 +110,7 @@ void Foam::meshless::monitors::energy::writeValues(Ostream& os)
             const particleField& m = set.field("mass");
             for (label i = 0; i < set.size(); ++i)
             {
+                if (b.model().isImage(i)) continue;
                 scalar u2 = 0;
                 for (label c = 0; c < set.dim(); ++c) u2 += sqr(U(i, c));
                 kinetic += 0.5*m(i, 0)*u2;

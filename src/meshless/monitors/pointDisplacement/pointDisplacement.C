@@ -5,7 +5,7 @@
 #include "pointDisplacement.H"
 #include "particleScene.H"
 #include "addToRunTimeSelectionTable.H"
-#include <Eigen/Dense>
+#include "movingLeastSquares.H"
 
 namespace Foam
 {
@@ -72,51 +72,28 @@ Foam::meshless::monitors::pointDisplacement::pointDisplacement
     const smoothingKernel& W = body_.kernel();
     const particleField& V = set.field("volume");
 
-    // Moving least squares with a linear basis: the weights c_b of
-    // u(p) = sum_b c_b u_b make it exact for any linear displacement field,
-    // also at a boundary point such as a beam's tip where every neighbour
-    // lies on one side (a Shepard average would lag there)
-    DynamicList<label> ids;
+    // Moving least squares with a linear basis (movingLeastSquares.H)
+    DynamicList<label> index;
     DynamicList<scalar> w;
-    DynamicList<Eigen::VectorXd> basis;
-    Eigen::MatrixXd M = Eigen::MatrixXd::Zero(dim + 1, dim + 1);
-    for (label i = 0; i < set.size(); ++i)
-    {
-        scalar r2 = 0;
-        for (label c = 0; c < dim; ++c) r2 += sqr(X0(i, c) - p[c]);
-        const scalar r = std::sqrt(r2);
-        if (r < W.radius())
-        {
-            Eigen::VectorXd q(dim + 1);
-            q(0) = 1;
-            for (label c = 0; c < dim; ++c) q(c + 1) = X0(i, c) - p[c];
-            ids.append(set.ids()[i]);
-            w.append(V(i, 0)*W.W(r));
-            basis.append(q);
-            M += w.last()*q*q.transpose();
-        }
-    }
-    if (ids.empty())
+    const label found =
+        movingLeastSquaresWeights(p, X0, V, W, dim, index, w);
+    if (found == 0)
     {
         FatalIOErrorInFunction(dict)
             << "point " << p << ": no particle of body " << body_.name()
             << " within the kernel radius " << W.radius()
             << " (reference configuration)" << exit(FatalIOError);
     }
-    const Eigen::FullPivLU<Eigen::MatrixXd> lu(M);
-    if (lu.rank() < dim + 1)
+    if (found < 0)
     {
         FatalIOErrorInFunction(dict)
-            << "point " << p << ": the " << ids.size() << " particles of body "
+            << "point " << p << ": the " << index.size() << " particles of body "
             << body_.name() << " around it do not span " << dim
             << " dimensions; give a point inside the body or a particle id"
             << exit(FatalIOError);
     }
-    const Eigen::VectorXd row = lu.solve(Eigen::VectorXd::Unit(dim + 1, 0));
-    forAll(w, k)
-    {
-        w[k] *= row.dot(basis[k]);
-    }
+    DynamicList<label> ids(index.size());
+    for (const label i : index) ids.append(set.ids()[i]);
     ids_.transfer(ids);
     weights_.transfer(w);
     index_ = labelList(ids_.size(), -1);

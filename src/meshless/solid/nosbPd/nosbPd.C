@@ -230,7 +230,10 @@ void Foam::meshless::bodyModels::nosbPd::connect(particleScene& scene)
 
     constraints_.reset
     (
-        new solidConstraints(dict_, set, X0_, scene.mesh())
+        new solidConstraints
+        (
+            dict_, set, X0_, scene.mesh(), &body_.kernel()
+        )
     );
 
     const label nRead =

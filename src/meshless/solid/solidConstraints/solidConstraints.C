@@ -5,6 +5,7 @@
 #include "solidConstraints.H"
 #include "seedRegion.H"
 #include "meshSearch.H"
+#include "movingLeastSquares.H"
 
 const Foam::Enum<Foam::meshless::solidConstraints::kind>
 Foam::meshless::solidConstraints::kindNames
@@ -22,7 +23,8 @@ Foam::meshless::solidConstraints::solidConstraints
     const dictionary& bodyDict,
     particleSet& particles,
     const particleField& X0,
-    const polyMesh& mesh
+    const polyMesh& mesh,
+    const smoothingKernel* kernel
 )
 :
     index_
@@ -33,7 +35,8 @@ Foam::meshless::solidConstraints::solidConstraints
             particleField::kind::scalar
         )
     ),
-    dim_(particles.dim())
+    dim_(particles.dim()),
+    mass_(&particles.field("mass"))
 {
     const label n = particles.size();
     index_->fill(-1);
@@ -118,10 +121,168 @@ Foam::meshless::solidConstraints::solidConstraints
                 << " belongs to an earlier constraint)" << exit(FatalIOError);
         }
     }
+
+    // Constraints on a face (once every particle's constraint is known)
+    loadIndex_.setSize(names_.size());
+    loadShare_.setSize(names_.size());
+    label c = 0;
+    for (const entry& e : constraintsDict)
+    {
+        const dictionary& d = e.dict();
+        const dictionary* faceDict = d.findDict("face");
+        if (faceDict)
+        {
+            if (kinds_[c] == kind::displacement)
+            {
+                FatalIOErrorInFunction(d)
+                    << "constraint " << e.keyword() << ": 'face' is for"
+                    << " clamped and load constraints" << exit(FatalIOError);
+            }
+            if (!kernel)
+            {
+                FatalIOErrorInFunction(d)
+                    << "constraint " << e.keyword() << ": a face needs the"
+                    << " body's kernel, which this model does not pass"
+                    << exit(FatalIOError);
+            }
+            const point p0 = faceDict->get<point>("point");
+            vector nf = faceDict->get<vector>("normal");
+            for (label k = dim_; k < 3; ++k) nf[k] = 0;
+            if (mag(nf) < SMALL)
+            {
+                FatalIOErrorInFunction(*faceDict)
+                    << "normal " << nf << ": expected a non-zero vector"
+                    << (dim_ == 2 ? " in the body's plane" : "")
+                    << exit(FatalIOError);
+            }
+            nf /= mag(nf);
+            if (kinds_[c] == kind::clamped)
+            {
+                mirrorClamp(c, e.keyword(), d, particles, X0, p0, nf);
+            }
+            else
+            {
+                faceLoad(c, e.keyword(), d, particles, X0, *kernel, p0, nf);
+            }
+        }
+        ++c;
+    }
 }
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::meshless::solidConstraints::mirrorClamp
+(
+    const label c,
+    const word& name,
+    const dictionary& d,
+    const particleSet& particles,
+    const particleField& X0,
+    const point& p0,
+    const vector& nf
+)
+{
+    const label n = particles.size();
+    const particleField& V = particles.field("volume");
+    if (partner_.empty()) partner_.setSize(n, -1);
+
+    for (label i = 0; i < n; ++i)
+    {
+        if (label((*index_)(i, 0)) != c) continue;
+
+        // The mirror image of X_i across the face
+        point Xi(Zero);
+        for (label k = 0; k < dim_; ++k) Xi[k] = X0(i, k);
+        const point Xm = Xi - 2*((Xi - p0) & nf)*nf;
+
+        // The particle there (a lattice symmetric about the face)
+        const scalar tol = 0.01*std::pow(V(i, 0), 1.0/dim_);
+        label best = -1;
+        scalar best2 = sqr(tol);
+        for (label j = 0; j < n; ++j)
+        {
+            scalar r2 = 0;
+            for (label k = 0; k < dim_; ++k) r2 += sqr(X0(j, k) - Xm[k]);
+            if (r2 < best2)
+            {
+                best2 = r2;
+                best = j;
+            }
+        }
+        if (best < 0 || !isFree(best))
+        {
+            FatalIOErrorInFunction(d)
+                << "constraint " << name << ": the mirror image " << Xm
+                << " of clamped particle " << particles.ids()[i] << " at "
+                << Xi << " across the face is "
+                << (best < 0 ? "not a particle" : "a constrained particle")
+                << " of body " << particles.name() << "; seed the body on a"
+                << " lattice symmetric about the face, no deeper behind it"
+                << " than the body is long" << exit(FatalIOError);
+        }
+        partner_[i] = best;
+    }
+}
+
+
+void Foam::meshless::solidConstraints::faceLoad
+(
+    const label c,
+    const word& name,
+    const dictionary& d,
+    const particleSet& particles,
+    const particleField& X0,
+    const smoothingKernel& W,
+    const point& p0,
+    const vector& nf
+)
+{
+    const label n = particles.size();
+    const particleField& V = particles.field("volume");
+    scalarList share(n, Zero);
+    DynamicList<label> index;
+    DynamicList<scalar> weight;
+
+    for (label i = 0; i < n; ++i)
+    {
+        if (label((*index_)(i, 0)) != c) continue;
+
+        // The share's point of action: the projection onto the face
+        point Xi(Zero);
+        for (label k = 0; k < dim_; ++k) Xi[k] = X0(i, k);
+        const point p = Xi - ((Xi - p0) & nf)*nf;
+
+        if (movingLeastSquaresWeights(p, X0, V, W, dim_, index, weight) <= 0)
+        {
+            FatalIOErrorInFunction(d)
+                << "constraint " << name << ": the particles of body "
+                << particles.name() << " around the point " << p
+                << " of the face do not span " << dim_ << " dimensions"
+                << exit(FatalIOError);
+        }
+        const scalar s = (*mass_)(i, 0)/setMass_[c];
+        forAll(index, k)
+        {
+            share[index[k]] += s*weight[k];
+        }
+    }
+
+    DynamicList<label> carriers;
+    DynamicList<scalar> shares;
+    forAll(share, i)
+    {
+        if (share[i] != 0)
+        {
+            carriers.append(i);
+            shares.append(share[i]);
+        }
+    }
+    loadIndex_[c].transfer(carriers);
+    loadShare_[c].transfer(shares);
+}
+
+
 
 Foam::vector Foam::meshless::solidConstraints::value
 (
@@ -161,6 +322,17 @@ void Foam::meshless::solidConstraints::prescribe
     {
         const label c = label((*index_)(i, 0));
         if (c < 0 || kinds_[c] == kind::load) continue;
+        const label j = partner_.empty() ? -1 : partner_[i];
+        if (j >= 0)
+        {
+            // Odd extension across the clamped face
+            for (label k = 0; k < dim_; ++k)
+            {
+                x(i, k) = X0(i, k) - (x(j, k) - X0(j, k));
+                U(i, k) = -U(j, k);
+            }
+            continue;
+        }
         for (label k = 0; k < dim_; ++k)
         {
             x(i, k) = X0(i, k) + d[c][k];
@@ -180,11 +352,21 @@ void Foam::meshless::solidConstraints::addLoads
     bool any = false;
     forAll(names_, c)
     {
-        if (kinds_[c] == kind::load)
+        if (kinds_[c] != kind::load) continue;
+        if (loadIndex_.size() && loadIndex_[c].size())
         {
-            a[c] = value(c, t)/setMass_[c];
-            any = true;
+            // On a face: the shares of the carriers
+            const vector F = value(c, t);
+            forAll(loadIndex_[c], k)
+            {
+                const label i = loadIndex_[c][k];
+                const scalar s = loadShare_[c][k]/(*mass_)(i, 0);
+                for (label j = 0; j < dim_; ++j) acc(i, j) += s*F[j];
+            }
+            continue;
         }
+        a[c] = value(c, t)/setMass_[c];
+        any = true;
     }
     if (!any) return;
 
@@ -193,6 +375,7 @@ void Foam::meshless::solidConstraints::addLoads
     {
         const label c = label((*index_)(i, 0));
         if (c < 0 || kinds_[c] != kind::load) continue;
+        if (loadIndex_.size() && loadIndex_[c].size()) continue;
         for (label k = 0; k < dim_; ++k) acc(i, k) += a[c][k];
     }
 }
@@ -203,8 +386,22 @@ void Foam::meshless::solidConstraints::describe(Ostream& os) const
     forAll(names_, c)
     {
         os  << "    constraint " << names_[c] << ": "
-            << kindNames[kinds_[c]] << " on " << count_[c] << " particles"
-            << nl;
+            << kindNames[kinds_[c]] << " on " << count_[c] << " particles";
+        if (kinds_[c] == kind::clamped && partner_.size())
+        {
+            label m = 0;
+            forAll(partner_, i)
+            {
+                m += (partner_[i] >= 0 && label((*index_)(i, 0)) == c);
+            }
+            if (m) os << ", mirrored across its face";
+        }
+        if (loadIndex_.size() && loadIndex_[c].size())
+        {
+            os  << ", acting on its face through " << loadIndex_[c].size()
+                << " particles";
+        }
+        os  << nl;
     }
 }
 

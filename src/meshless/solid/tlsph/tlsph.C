@@ -68,8 +68,9 @@ void Foam::meshless::bodyModels::tlsph::buildReference()
     const label singular = tlsphOperators::reference<Dim>
     (
         pairs_, body_.kernel(), X, V0_.data(),
-        vgradW_, corrGradW_, Wab_, KinvT_
+        vgradW_, corrGradW_, Wab_, KinvT_, order_
     );
+    reverse_ = tlsphOperators::reversePairs(pairs_);
 
     if (singular >= 0)
     {
@@ -115,7 +116,7 @@ void Foam::meshless::bodyModels::tlsph::evaluate
         const double* V = V0_.data();
         const double* F = F_.data();
         const double* Fo = Fold_.data();
-        double* A = A_.data();
+        double* P = P_.data();
         const constitutiveLaw& law = law_();
 
         computeF<Dim>(F_);
@@ -123,23 +124,24 @@ void Foam::meshless::bodyModels::tlsph::evaluate
         #pragma omp parallel for schedule(static)
         for (label a = 0; a < n; ++a)
         {
-            const tensor P = law.stress
+            const tensor Pa = law.stress
             (
                 a, particleTensor(Fo, a, Dim), particleTensor(F, a, Dim)
             );
-            tlsphOperators::stressTimesKinvT<Dim>
-            (
-                P.cdata(), KinvT_.data() + a*Dim*Dim, A + a*Dim*Dim
-            );
+            tlsphOperators::stressDim<Dim>(Pa.cdata(), P + a*Dim*Dim);
         }
 
-        tlsphOperators::internalForce<Dim>(pairs_, vgradW_.data(), V, A, acc);
+        tlsphOperators::internalForce<Dim>
+        (
+            pairs_, corrGradW_.data(), reverse_.data(), V, P, acc
+        );
         if (hourglass_ > 0)
         {
             tlsphOperators::hourglassForce<Dim>
             (
                 pairs_, Wab_.data(), V, X, x, F,
-                0.5*hourglass_*law.elastic().E(), acc
+                0.5*hourglass_*law.elastic().E(), acc,
+                law.geometricallyLinear()
             );
         }
 
@@ -340,7 +342,7 @@ Foam::meshless::bodyModels::tlsph::tlsph
     acc_(body.particles().addScratchField("acc", particleField::kind::vector)),
     F_(body.particles().addScratchField("F", particleField::kind::tensor)),
     Fold_(body.particles().addScratchField("Fold", particleField::kind::tensor)),
-    A_(body.particles().addScratchField("PKinvT", particleField::kind::tensor)),
+    P_(body.particles().addScratchField("P", particleField::kind::tensor)),
     xn_(body.particles().addScratchField("xn", particleField::kind::vector)),
     Un_(body.particles().addScratchField("Un", particleField::kind::vector)),
     sumX_(body.particles().addScratchField("sumX", particleField::kind::vector)),
@@ -348,6 +350,7 @@ Foam::meshless::bodyModels::tlsph::tlsph
     law_(constitutiveLaw::New(dict, body.dim(), body.particles())),
     integrator_(integratorNames.get("integrator", dict)),
     hourglass_(dict.getOrDefault<scalar>("hourglassControl", 0)),
+    order_(dict.getOrDefault<label>("gradientOrder", 1)),
     minSubSteps_
     (
         dict.found("subSteps") ? readPositiveLabel(dict, "subSteps") : 1
@@ -364,6 +367,14 @@ Foam::meshless::bodyModels::tlsph::tlsph
         FatalIOErrorInFunction(dict)
             << "hourglassControl " << hourglass_ << ": expected a coefficient"
             << " >= 0 (0: off; the tutorials use 10)"
+            << exit(FatalIOError);
+    }
+
+    if (order_ != 1 && order_ != 2)
+    {
+        FatalIOErrorInFunction(dict)
+            << "gradientOrder " << order_ << ": expected 1 (eq. 35-36, the"
+            << " default) or 2 (with the quadratic terms)"
             << exit(FatalIOError);
     }
 
@@ -414,15 +425,16 @@ void Foam::meshless::bodyModels::tlsph::connect(particleScene& scene)
             dict_,
             body_.particles(),
             X0_,
-            scene.mesh()
+            scene.mesh(),
+            &body_.kernel()
         )
     );
     stressCost_ = scene.costs().part(body_.name() + ": tlsph stress");
 
     Info<< "    " << body_.name() << ": tlsph, "
         << integratorNames[integrator_] << ", wave speed " << c_ << " m/s, "
-        << pairs_.nPairs() << " reference pairs, hourglassControl "
-        << hourglass_ << nl;
+        << pairs_.nPairs() << " reference pairs, gradientOrder " << order_
+        << ", hourglassControl " << hourglass_ << nl;
     constraints_->describe(Info);
 }
 
@@ -491,6 +503,7 @@ Foam::scalar Foam::meshless::bodyModels::tlsph::strainEnergy() const
     scalar W = 0;
     for (label a = 0; a < n; ++a)
     {
+        if (isImage(a)) continue;
         W += V0_(a, 0)
             *law_->energyDensity(a, particleTensor(F_.data(), a, dim));
     }
@@ -504,11 +517,13 @@ Foam::scalar Foam::meshless::bodyModels::tlsph::strainEnergy() const
             dim == 2
           ? tlsphOperators::hourglassEnergy<2>
             (
-                pairs_, Wab_.data(), V0_.data(), X0_.data(), x, F_.data(), c
+                pairs_, Wab_.data(), V0_.data(), X0_.data(), x, F_.data(), c,
+                law_->geometricallyLinear()
             )
           : tlsphOperators::hourglassEnergy<3>
             (
-                pairs_, Wab_.data(), V0_.data(), X0_.data(), x, F_.data(), c
+                pairs_, Wab_.data(), V0_.data(), X0_.data(), x, F_.data(), c,
+                law_->geometricallyLinear()
             );
     }
     return W;

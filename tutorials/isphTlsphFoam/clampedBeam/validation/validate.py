@@ -21,7 +21,8 @@ the last 0.3 ms (to show the damped beam is at rest).
 
 Each run goes to validation/runs/; validation/result.md lists them all with
 the plot validation/deflection.png. With --check, exits 1 when a small
-kinematics run with 11 or more particles through the thickness misses 0.5 %.
+kinematics run of the tutorial's scheme ('faces') with 11 or more particles
+through the thickness misses 0.5 %.
 
 Usage: validate.py <case> [--check]
 """
@@ -86,6 +87,27 @@ def elastica(E):
     return abs(integrate(0.5 * (lo + hi))[1])
 
 
+def optional_entry(case, key):
+    try:
+        return dictionary_entry(case, key)
+    except Exception:
+        return None
+
+
+def scheme(case):
+    """'faces': F of order 2, clamp and load on their faces (the default);
+    'paper': eq. 36, clamped particles held, load on the end column"""
+    order = optional_entry(case, "bodies/beam/gradientOrder") or "1"
+    clamp = optional_entry(case, "bodies/beam/constraints/clamp/face/point")
+    load = optional_entry(case, "bodies/beam/constraints/tipLoad/face/point")
+    if order == "2" and clamp and load:
+        return "faces"
+    if order == "1" and not clamp and not load:
+        return "paper"
+    return "order %s%s%s" % (order, ", clamp face" if clamp else "",
+                             ", load face" if load else "")
+
+
 def analyse(case):
     E, nu = material(case)
     tip = read_monitor(case, "tip")
@@ -96,7 +118,7 @@ def analyse(case):
     dx = float(dictionary_entry(case, "dx", "system/seedParticlesDict"))
     cost = run_cost(os.path.join(case, "log.isphTlsphFoam"))
     return {
-        "n": round(T / dx), "kinematics": kin,
+        "n": round(T / dx), "kinematics": kin, "scheme": scheme(case),
         "hourglass": float(dictionary_entry(case, "hourglass")),
         "deflection": -dy[-1], "spread": max(tail) - min(tail),
         "reference": ref, "endTime": t[-1],
@@ -111,24 +133,32 @@ def write_table(runs, E, nu):
         "# Clamped beam: static tip deflection vs beam theory",
         "",
         "Command: `tutorials/isphTlsphFoam/clampedBeam/Allrun -all` (or "
-        "single runs: `-n N`, `-hourglass 0`, `-finite`); one line per run "
-        "in validation/runs/.",
+        "single runs: `-n N`, `-hourglass 0`, `-finite`, `-paper`); one "
+        "line per run in validation/runs/.",
+        "",
+        "Schemes: *faces* (the tutorial's): F from the fit with the "
+        "quadratic terms (gradientOrder 2), the clamped particles mirror "
+        "the beam's across x = 0, the load acts on the end face x = L; "
+        "*paper*: eq. 36, the clamped particles held at rest, the load on "
+        "the end column (x = L - dx/2). Small kinematics: hourglass control "
+        "linearised (see the README).",
         "",
         "References: Timoshenko (eq. 50) %.2f mm for small kinematics, the "
         "elastica %.2f mm for finite kinematics (no shear: finite runs are "
         "expected about 0.8 %% above it)." % (1e3 * timoshenko(E, nu),
                                              1e3 * elastica(E)),
         "",
-        "| kinematics | hourglass control | particles through T | tip "
-        "deflection | reference | error | spread over the last 0.3 ms "
+        "| scheme | kinematics | hourglass control | particles through T "
+        "| tip deflection | reference | error | spread over the last 0.3 ms "
         "| particles | steps | wall time | particle-steps/s | threads |",
-        "|---|---|---|---|---|---|---|---|---|---|---|---|",
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|",
     ]
     for r in runs:
         lines.append(
-            "| %s | %g | %d | %.3f mm | %.2f mm | %+.2f %% | %.1e mm | %d "
-            "| %d | %.0f s | %.3g | %s |"
-            % (r["kinematics"], r["hourglass"], r["n"], 1e3 * r["deflection"],
+            "| %s | %s | %g | %d | %.3f mm | %.2f mm | %+.2f %% | %.1e mm "
+            "| %d | %d | %.0f s | %.3g | %s |"
+            % (r["scheme"], r["kinematics"], r["hourglass"], r["n"],
+               1e3 * r["deflection"],
                1e3 * r["reference"],
                100 * (r["deflection"] / r["reference"] - 1),
                1e3 * r["spread"], r["particles"], r["steps"], r["wall"],
@@ -137,11 +167,14 @@ def write_table(runs, E, nu):
         "",
         "Target: small kinematics, 11 particles through the thickness: "
         "error < 0.5 % (the paper: 1.04 %, finite kinematics against the "
-        "small-strain formula).",
+        "small-strain formula). The tutorial's scheme converges as -0.18 % "
+        "+ 1.01/n^2, the 1/n^2 being the midpoint rule's second moment of "
+        "area (0.83 % at n = 11), so the target is met from n = 13 and "
+        "missed at n = 11: README, 'Sources of error'.",
         "",
         "Set-up: ISPH-TLSPH paper 3.1 (L = 100 mm, T = 10 mm, b = 1 mm out "
         "of plane: plane stress, E = 210 GPa, nu = 0.3, 1750 N ramped over "
-        "1.5 ms on the end column and held to 3 ms), cubic spline h = 1.2 "
+        "1.5 ms on the end and held to 3 ms), cubic spline h = 1.2 "
         "dx, RK4, a clamp of 3 columns behind x = 0, damping 8000 1/s "
         "(0.76 of critical for the first mode) to reach rest. Plot: "
         "deflection.png.",
@@ -180,22 +213,26 @@ def main():
     case = sys.argv[1] if len(sys.argv) > 1 else "."
     check = "--check" in sys.argv
     run = analyse(case)
-    save_run(os.path.join(here, "runs"), "n%d-%s-hourglass%g"
-             % (run["n"], run["kinematics"], run["hourglass"]), run)
+    save_run(os.path.join(here, "runs"), "%s-n%d-%s-hourglass%g"
+             % (run["scheme"].replace(", ", "-").replace(" ", ""), run["n"],
+                run["kinematics"], run["hourglass"]), run)
     runs = load_runs(os.path.join(here, "runs"))
     for r in runs:
         r["n"] = int(r["n"])
         r["threads"] = str(r["threads"]).replace(".0", "")
-    runs.sort(key=lambda r: (r["kinematics"] != "small", -r["hourglass"],
+    runs.sort(key=lambda r: (r["scheme"] != "faces", r["scheme"],
+                             r["kinematics"] != "small", -r["hourglass"],
                              r["n"]))
     write_table(runs, *material(case))
-    if run["kinematics"] == "small" and run["hourglass"] > 0:
+    if (run["kinematics"] == "small" and run["hourglass"] > 0
+            and run["scheme"] == "faces"):
         plot(case, run)
     err = run["deflection"] / run["reference"] - 1
     print("%d particles through T, %s kinematics: tip deflection %.3f mm, "
           "error %+.2f %%" % (run["n"], run["kinematics"],
                               1e3 * run["deflection"], 100 * err))
-    if check and run["kinematics"] == "small" and run["n"] >= 11:
+    if (check and run["kinematics"] == "small" and run["n"] >= 11
+            and run["scheme"] == "faces"):
         ok = abs(err) < TARGET
         print("target (< %.1f %%): %s" % (100 * TARGET,
                                           "met" if ok else "MISSED"))

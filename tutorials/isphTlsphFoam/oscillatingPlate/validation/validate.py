@@ -101,6 +101,7 @@ def analyse(case):
     cost = run_cost(os.path.join(case, "log.isphTlsphFoam"))
     return {
         "TdX": round(THICK / dx), "dx": dx, "hourglass": hourglass(case),
+        "scheme": scheme(case),
         "period": period * th["c0"] / L, "amplitude": amplitude / L,
         "periodTheory": th["period"] * th["c0"] / L,
         "amplitudeTheory": th["amplitude"] / L,
@@ -119,9 +120,32 @@ def hourglass(case):
     return float(entry(case, "hourglass"))
 
 
+def scheme(case):
+    """'paper': eq. 36, the clamped particles held (the default); 'order 2':
+    F of order 2 (Allrun -order 2); 'faces': order 2, clamp on its face"""
+    try:
+        order = entry(case, "bodies/plate/gradientOrder")
+    except Exception:
+        order = "1"
+    try:
+        entry(case, "bodies/plate/constraints/clamp/face/point")
+        clamp = True
+    except Exception:
+        clamp = False
+    if order == "2" and clamp:
+        return "faces"
+    if order == "1" and not clamp:
+        return "paper"
+    return "order %s%s" % (order, ", clamp face" if clamp else "")
+
+
+TUTORIAL_SCHEME = "paper"
+
+
 def save(run):
-    save_run(os.path.join(here, "runs"),
-             "dx%g-hourglass%g" % (run["dx"], run["hourglass"]), run)
+    save_run(os.path.join(here, "runs"), "%s-dx%g-hourglass%g"
+             % (run["scheme"].replace(", ", "-").replace(" ", ""), run["dx"],
+                run["hourglass"]), run)
 
 
 def runs_present():
@@ -129,7 +153,9 @@ def runs_present():
     for r in runs:
         r["TdX"] = int(r["TdX"])
         r["threads"] = str(r["threads"]).replace(".0", "")
-    return sorted(runs, key=lambda r: (-r["hourglass"], -r["TdX"]))
+    return sorted(runs, key=lambda r: (r["scheme"] != TUTORIAL_SCHEME,
+                                       r["scheme"],
+                                       -r["hourglass"], -r["TdX"]))
 
 
 def errors(run):
@@ -146,25 +172,32 @@ def write_table(runs):
         "<spacing>` (T/dx = 0.02/spacing), one line per run present in "
         "validation/runs/.",
         "",
-        "| method | hourglass control | T/dx | period t c0/L | error | A/L "
-        "| error | particles | steps | wall time | particle-steps/s "
-        "| threads |",
-        "|---|---|---|---|---|---|---|---|---|---|---|---|",
-        "| plate theory | | - | %.2f | - | %.4f | - | | | | | |"
+        "Schemes: *paper* (the tutorial's): eq. 36; *order 2* (`Allrun "
+        "-order 2`): F from the fit with the quadratic terms (gradientOrder "
+        "2). The clamped particles are held at rest in both. See the "
+        "README's 'Known limits' for why the tutorial keeps the paper's "
+        "scheme.",
+        "",
+        "| method | scheme | hourglass control | T/dx | period t c0/L "
+        "| error | A/L | error | particles | steps | wall time "
+        "| particle-steps/s | threads |",
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|",
+        "| plate theory | | | - | %.2f | - | %.4f | - | | | | | |"
         % (th["periodTheory"], th["amplitudeTheory"]),
     ]
     for r in runs:
         ep, ea = errors(r)
         lines.append(
-            "| isphTlsphFoam | %g | %d | %.2f | %+.2f %% | %.4f | %+.2f %% "
-            "| %d | %d | %.0f s | %.3g | %s |"
-            % (r["hourglass"], r["TdX"], r["period"], 100 * ep, r["amplitude"], 100 * ea,
+            "| isphTlsphFoam | %s | %g | %d | %.2f | %+.2f %% | %.4f "
+            "| %+.2f %% | %d | %d | %.0f s | %.3g | %s |"
+            % (r["scheme"], r["hourglass"], r["TdX"], r["period"], 100 * ep,
+               r["amplitude"], 100 * ea,
                r["particles"], r["steps"], r["wall"], r["rate"],
                r["threads"]))
     for n in sorted(PAPER, reverse=True):
         p, a = PAPER[n]
         lines.append(
-            "| paper's TLSPH (Table 3) | | %d | %.2f | %+.2f %% | %.3f | "
+            "| paper's TLSPH (Table 3) | | | %d | %.2f | %+.2f %% | %.3f | "
             "%+.2f %% | | | | | |"
             % (n, p, 100 * (p / th["periodTheory"] - 1), a,
                100 * (a / th["amplitudeTheory"] - 1)))
@@ -175,7 +208,8 @@ def write_table(runs):
         "Set-up: ISPH-TLSPH paper 3.1 (L = 0.2 m, T = 0.02 m, rho = 1000, "
         "K = 3.25 MPa, nu = 0.3975, plane strain, kL = 1.875, V0 = 0.01), "
         "cubic spline kernel h = 1.2 dx, RK4, linearElastic with finite "
-        "kinematics, clamp 0.01 m long behind x = 0; hourglass control "
+        "kinematics, clamp 0.01 m long behind x = 0 (its particles held); "
+        "hourglass control "
         "(Ganzenmueller 2015) coefficient as in its column. The tip "
         "displacement is interpolated at (0.2, 0) by moving least squares. "
         "Plot: tip.png (the finest run with hourglass control).",
@@ -222,7 +256,7 @@ def main():
     run = analyse(case)
     save(run)
     write_table(runs_present())
-    if run["hourglass"] > 0:
+    if run["hourglass"] > 0 and run["scheme"] == TUTORIAL_SCHEME:
         plot(case, run)
     ep, ea = errors(run)
     n = run["TdX"]
@@ -232,7 +266,7 @@ def main():
                   PAPER[n][1] / run["amplitudeTheory"] - 1)
     print("T/dx = %d: period error %+.2f %%, amplitude error %+.2f %%"
           % (n, 100 * ep, 100 * ea))
-    if check and limits is not None:
+    if check and limits is not None and run["scheme"] == TUTORIAL_SCHEME:
         ok = abs(ep) < limits[0] and abs(ea) < limits[1]
         print("target (period < %.2f %%, amplitude < %.2f %%): %s"
               % (100 * limits[0], 100 * limits[1], "met" if ok else "MISSED"))
