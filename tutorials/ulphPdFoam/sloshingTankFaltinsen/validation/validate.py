@@ -158,10 +158,23 @@ def interp(series, t):
 
 
 def run_cost(case):
+    """Steps, wall and CPU time and particles of log.ulphPdFoam; a log of a
+    run and its restarts (the solver's output appended, each starting with
+    'Create time') adds up the times of each"""
     log = open(os.path.join(case, "log.ulphPdFoam")).read()
-    clock = re.findall(r"ClockTime = ([0-9.]+) s", log)
-    cpu = re.findall(r"ExecutionTime = ([0-9.e+]+) s", log)
+    segments = re.split(r"^Create time$", log, flags=re.M)[1:] or [log]
+    clock, cpu = [], []
+    for seg in segments:
+        c = re.findall(r"ClockTime = ([0-9.]+) s", seg)
+        e = re.findall(r"ExecutionTime = ([0-9.e+]+) s", seg)
+        if c:
+            clock.append(float(c[-1]))
+            cpu.append(float(e[-1]))
+    clock = [sum(clock)] if clock else []
+    cpu = [sum(cpu)] if cpu else []
     rate = re.findall(r"Particle-steps per second: ([0-9.e+]+)", log)
+    if len(segments) > 1:
+        rate = []       # per run: recomputed from the totals below
     spacing = re.search(r"water: (\d+) particles, spacing ([0-9.e-]+)", log)
     nwall = re.search(r"tank: (\d+) particles", log)
     cost = {
@@ -175,8 +188,8 @@ def run_cost(case):
         "endTime": cost_end(case),
     }
     if not rate and clock:
-        # a run still going or stopped: the rate the solver prints at its
-        # end, from the steps and particles so far
+        # a run still going, stopped or restarted: the rate from the steps
+        # and particles so far
         cost["rate"] = cost["steps"] * (cost["water"] + cost["walls"]) \
             / cost["clock"]
     return cost
