@@ -30,23 +30,13 @@ import sys
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(here), "lib"))
 from caseTest import (CaseTest, copy_case, project_dir, run,  # noqa: E402
-                      scratch, set_entry)
+                      scratch, set_entry, table)
 sys.path.insert(0, os.path.join(project_dir, "etc", "python"))
 from foamCloud import read_positions, times  # noqa: E402
 from foamMonitor import read_monitor  # noqa: E402
 
 # First peak of point A at 4 mm: value [m] and time [s] bands
 FIRST_PEAK = ((0.030, 0.060), (0.19, 0.28))
-
-
-def table(path):
-    rows = []
-    with open(path) as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            rows.append([float(v) for v in line.split()])
-    return rows
 
 
 def prepare(t, name, work, dx, end):

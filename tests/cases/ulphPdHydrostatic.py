@@ -23,22 +23,12 @@ import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(here), "lib"))
-from caseTest import CaseTest, copy_case, run, scratch  # noqa: E402
+from caseTest import CaseTest, copy_case, run, scratch, table  # noqa: E402
 from caseTest import project_dir  # noqa: E402
 sys.path.insert(0, os.path.join(project_dir, "etc", "python"))
 from foamCloud import read_cloud, times  # noqa: E402
 
 H, W, DX, G, RHO = 0.1, 0.2, 0.005, 9.81, 1000.0
-
-
-def table(path):
-    rows = []
-    with open(path) as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            rows.append([float(v) for v in line.split()])
-    return rows
 
 
 def main():

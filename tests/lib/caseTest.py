@@ -74,5 +74,17 @@ def snapshot(case):
     return out
 
 
+def table(path):
+    """Rows of numbers of a whitespace-separated file, '#' lines skipped
+    (a monitor's or the coupling's .dat)"""
+    rows = []
+    with open(path) as f:
+        for line in f:
+            if line.startswith("#") or not line.strip():
+                continue
+            rows.append([float(v) for v in line.split()])
+    return rows
+
+
 def scratch(prefix):
     return tempfile.mkdtemp(prefix=prefix + ".")
