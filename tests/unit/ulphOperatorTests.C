@@ -43,6 +43,37 @@ cloud lattice(const label dim, const label n, const double dx, const double jitt
     return c;
 }
 
+//- A cloud's own neighbour list as the one neighbour source of its
+//  operators (built in place: the source points at the list)
+struct ownNeighbours
+{
+    cellLinkedList cells;
+    neighbourList list;
+    std::vector<neighbourSource> sources;
+
+    ownNeighbours(const cloud& c, const smoothingKernel& W)
+    :
+        cells(c.dim, W.radius())
+    {
+        cells.build(c.x.data(), c.size());
+        list.build(cells, c.x.data(), c.size(), true);
+        sources = {{&list, c.x.data(), c.V.data()}};
+    }
+};
+
+//- A jet one particle thick: n particles along x at y = 0.5, volumes dx^2
+cloud jet(const label n, const double dx)
+{
+    cloud c{2, {}, {}};
+    for (label i = 0; i < n; ++i)
+    {
+        c.x.push_back(i*dx);
+        c.x.push_back(0.5);
+    }
+    c.V.assign(n, dx*dx);
+    return c;
+}
+
 autoPtr<smoothingKernel> ulphKernel(const label dim, const double dx)
 {
     // The paper's kernel: Gaussian, h = 1.2 dx, horizon 3h
@@ -96,11 +127,8 @@ void expectExact
     autoPtr<smoothingKernel> W = ulphKernel(Dim, dx);
     const double lambdaFloor =
         floorRatio*ulphOperators::fullSupportEigenvalue<Dim>(*W, dx);
-    cellLinkedList cells(Dim, W->radius());
-    cells.build(c.x.data(), c.size());
-    neighbourList list;
-    list.build(cells, c.x.data(), c.size(), true);
-    const std::vector<neighbourSource> sources{{&list, c.x.data(), c.V.data()}};
+    const ownNeighbours own(c, *W);
+    const std::vector<neighbourSource>& sources = own.sources;
 
     particleField Minv("Minv", particleField::kind::tensor, Dim);
     Minv.resize(c.size());
@@ -197,11 +225,8 @@ void expectFullSupportEigenvalue(const label n)
     const double dx = 0.01;
     const cloud c = lattice(Dim, n, dx, 0);
     autoPtr<smoothingKernel> W = ulphKernel(Dim, dx);
-    cellLinkedList cells(Dim, W->radius());
-    cells.build(c.x.data(), c.size());
-    neighbourList list;
-    list.build(cells, c.x.data(), c.size(), true);
-    const std::vector<neighbourSource> sources{{&list, c.x.data(), c.V.data()}};
+    const ownNeighbours own(c, *W);
+    const std::vector<neighbourSource>& sources = own.sources;
     particleField Minv("Minv", particleField::kind::tensor, Dim);
     Minv.resize(c.size());
     ulphOperators::shapeTensorInverse<Dim>
@@ -238,19 +263,10 @@ TEST(ulphOperators, shapeTensorFloorBoundsAThinJet)
     // inverse is bounded by 1/floor, derivatives along the jet shrink by
     // at most that ratio and stay of the right sign, across it zero
     const double dx = 0.01;
-    cloud c{2, {}, {}};
-    for (label i = 0; i < 10; ++i)
-    {
-        c.x.push_back(i*dx);
-        c.x.push_back(0.5);
-    }
-    c.V.assign(c.size(), dx*dx);
+    const cloud c = jet(10, dx);
     autoPtr<smoothingKernel> W = ulphKernel(2, dx);
-    cellLinkedList cells(2, W->radius());
-    cells.build(c.x.data(), c.size());
-    neighbourList list;
-    list.build(cells, c.x.data(), c.size(), true);
-    const std::vector<neighbourSource> sources{{&list, c.x.data(), c.V.data()}};
+    const ownNeighbours own(c, *W);
+    const std::vector<neighbourSource>& sources = own.sources;
     const double lambdaFloor =
         0.5*ulphOperators::fullSupportEigenvalue<2>(*W, dx);
 
@@ -342,22 +358,14 @@ TEST(ulphOperators, degenerateShapeTensorsFallBackWithoutNaN)
 {
     // Particles on a line (a thin jet) and one isolated particle
     const double dx = 0.01;
-    cloud c{2, {}, {}};
-    for (label i = 0; i < 10; ++i)
-    {
-        c.x.push_back(i*dx);
-        c.x.push_back(0.5);
-    }
+    cloud c = jet(10, dx);
     c.x.push_back(5.0);
     c.x.push_back(5.0);
     c.V.assign(c.size(), dx*dx);
 
     autoPtr<smoothingKernel> W = ulphKernel(2, dx);
-    cellLinkedList cells(2, W->radius());
-    cells.build(c.x.data(), c.size());
-    neighbourList list;
-    list.build(cells, c.x.data(), c.size(), true);
-    const std::vector<neighbourSource> sources{{&list, c.x.data(), c.V.data()}};
+    const ownNeighbours own(c, *W);
+    const std::vector<neighbourSource>& sources = own.sources;
 
     particleField Minv("Minv", particleField::kind::tensor, 2);
     Minv.resize(c.size());
