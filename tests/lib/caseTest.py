@@ -43,9 +43,11 @@ class CaseTest:
 
 
 def copy_case(src, dst):
-    """A clean copy of a tutorial: no mesh, no results, no logs."""
+    """A clean copy of a tutorial: no mesh, no results, no logs, none of
+    the files an Allrun writes into system/ for its options."""
     shutil.copytree(src, dst, ignore=shutil.ignore_patterns(
-        "[0-9]*", "log.*", "*.foam", "polyMesh", "VTK", "postProcessing"))
+        "[0-9]*", "log.*", "*.foam", "polyMesh", "VTK", "postProcessing",
+        "resolution", "runParameters"))
     return dst
 
 
