@@ -8,7 +8,8 @@ Description
     bonds break at the critical stretch (eq. 47) and the damage follows
     (eq. 49), broken bonds survive a write and read by particle id, and the
     odd-even zero-energy mode grows without Silling's stabilisation and
-    stays bounded with it.
+    stays bounded with it; the bond viscosity keeps linear and angular
+    momentum, is blind to rigid motion and only dissipates.
 
 \*---------------------------------------------------------------------------*/
 
@@ -19,6 +20,7 @@ Description
 #include "smoothingKernel.H"
 #include "OSspecific.H"
 #include <cmath>
+#include <random>
 
 using namespace Foam;
 using namespace Foam::meshless;
@@ -524,6 +526,79 @@ TEST(nosbPd, hourglassModeGrowsWithoutStabilisationNotWith)
     EXPECT_LT(std::abs(finalOn), 0.3);
     // With: an oscillation of amplitude about v0/omega_hg, well below
     EXPECT_LT(on, 0.3) << "amplitude/(v0 T) with stabilisation";
+}
+
+
+// * * * * * * * * * * * * * * Bond viscosity  * * * * * * * * * * * * * * //
+
+TEST(nosbPd, bondViscosityKeepsMomentumIgnoresRigidMotionDissipates)
+{
+    for (const label dim : {2, 3})
+    {
+        pdLattice L(dim, dim == 2 ? 12 : 7, 0.1);
+        const label np = L.size();
+        std::mt19937 gen(7);
+        std::uniform_real_distribution<double> r(-1, 1);
+
+        // Deformed, jittered current positions; random velocities
+        L.affine(A3, vector(0.3, -0.2, 0.1));
+        for (label k = 0; k < np*dim; ++k) L.x()[k] += 0.05*L.dx*r(gen);
+        std::vector<double> U(np*dim);
+        for (double& u : U) u = r(gen);
+
+        const scalar eta = 250, V = std::pow(L.dx, dim);
+        auto viscous = [&](const std::vector<double>& vel)
+        {
+            std::fill(L.f.begin(), L.f.end(), 0.0);
+            if (dim == 2)
+            {
+                nosbPdOperators::bondViscosity<2>
+                (*L.fam, L.x(), vel.data(), L.m.data(), eta, L.W->h(), L.f.data());
+            }
+            else
+            {
+                nosbPdOperators::bondViscosity<3>
+                (*L.fam, L.x(), vel.data(), L.m.data(), eta, L.W->h(), L.f.data());
+            }
+        };
+        auto vec = [&](const std::vector<double>& a, const label i)
+        {
+            vector v(Zero);
+            for (label d = 0; d < dim; ++d) v[d] = a[i*dim + d];
+            return v;
+        };
+        std::vector<double> y(L.x(), L.x() + np*dim);
+
+        viscous(U);
+        vector P(Zero), Lang(Zero);
+        scalar scale = 0, moment = 0, power = 0;
+        for (label i = 0; i < np; ++i)
+        {
+            const vector Fi = V*vec(L.f, i);
+            P += Fi;
+            Lang += vec(y, i) ^ Fi;
+            scale += mag(Fi);
+            moment += mag(vec(y, i))*mag(Fi);
+            power += Fi & vec(U, i);
+        }
+        ASSERT_GT(scale, 0) << dim << "D";
+        EXPECT_LT(mag(P), 1e-12*scale) << dim << "D: linear momentum";
+        EXPECT_LT(mag(Lang), 1e-12*moment) << dim << "D: angular momentum";
+        EXPECT_LT(power, 0) << dim << "D: the viscosity must dissipate";
+
+        // A rigid motion: translation and rotation about an axis
+        const vector c(0.4, -1.1, 0.7), w(dim == 2 ? 0 : 0.8, dim == 2 ? 0 : -0.5, 1.3);
+        std::vector<double> rigid(np*dim);
+        for (label i = 0; i < np; ++i)
+        {
+            const vector v = c + (w ^ vec(y, i));
+            for (label d = 0; d < dim; ++d) rigid[i*dim + d] = v[d];
+        }
+        viscous(rigid);
+        scalar worst = 0;
+        for (label i = 0; i < np; ++i) worst = max(worst, V*mag(vec(L.f, i)));
+        EXPECT_LT(worst, 1e-12*scale) << dim << "D: rigid motion is not resisted";
+    }
 }
 
 

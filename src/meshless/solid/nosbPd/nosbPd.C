@@ -33,6 +33,13 @@ Foam::meshless::bodyModels::nosbPd::nosbPd
     bodyModel(body, dict),
     rho0_(body.density()),
     Gs_(dict.get<scalar>("hourglassCoefficient")),
+    alphaV_
+    (
+        dict.found("artificialViscosity")
+      ? readPositive(dict, "artificialViscosity")
+      : 0
+    ),
+    eta_(0),
     order_(dict.found("order") ? readLabelInRange(dict, "order", 1, 2) : 1),
     s0_(0),
     C_(0),
@@ -64,9 +71,10 @@ Foam::meshless::bodyModels::nosbPd::nosbPd
     P_(body.particles().addScratchField("P", particleField::kind::tensor)),
     m_(body.particles().addScratchField("weightedVolume", particleField::kind::scalar)),
     Ws_(body.particles().addScratchField("Ws", particleField::kind::scalar)),
+    // Written: the first half kick after a restart needs the last force
     fExt_
     (
-        body.particles().addScratchField("externalForce", particleField::kind::vector)
+        body.particles().addField("externalForce", particleField::kind::vector)
     ),
     resolved_(body.particles().size(), 1),
     law_(constitutiveLaw::New(dict, body.dim(), body.particles())),
@@ -80,6 +88,8 @@ Foam::meshless::bodyModels::nosbPd::nosbPd
             << exit(FatalIOError);
     }
     C_ = Gs_*law_->waveModulus();
+    eta_ = alphaV_*rho0_*std::sqrt(law_->waveModulus()/rho0_)
+       *body.kernel().h();
 
     families_.reset(new peridynamicFamilies(X0_, V0_, body.kernel()));
     g_.resize(families_->nBonds()*body.dim());
@@ -194,6 +204,14 @@ void Foam::meshless::bodyModels::nosbPd::evaluate
         *families_, X0_.data(), x, P_.data(), g_.data(), F_.data(),
         m_.data(), resolved_.data(), C_, acc_.data()
     );
+    if (eta_ > 0)
+    {
+        nosbPdOperators::bondViscosity<Dim>
+        (
+            *families_, x, U_.data(), m_.data(), eta_, body_.kernel().h(),
+            acc_.data()
+        );
+    }
 
     double* a = acc_.data();
     const label nv = n*Dim;
@@ -269,6 +287,11 @@ void Foam::meshless::bodyModels::nosbPd::connect(particleScene& scene)
         << " bonds per particle, horizon " << body_.kernel().radius()
         << ", F of order " << order_ << ", law " << law_->type()
         << ", hourglassCoefficient " << Gs_;
+    if (eta_ > 0)
+    {
+        Info<< ", artificialViscosity " << alphaV_ << " (eta " << eta_
+            << " Pa s)";
+    }
     if (s0_ > 0)
     {
         Info<< ", critical stretch " << s0_ << " (" << nRead
