@@ -16,7 +16,16 @@ elasticObstacle and elasticGate:
 - stability: no particle lost, no water particle inside the solid (every
   water particle further than a quarter spacing from every solid particle,
   at every written time), the total energy not growing by more than 1e-3
-  of the water's initial potential energy.
+  of the water's initial potential energy, the solid's particle-scale
+  velocity noise below 0.1 sqrt(g H) (etc/python/fsiChecks.py).
+sluiceGate (paper 4.5; 3.5 mm, the gate 2 particles thick, to 0.3 s):
+the momentum exchange and stability checks above, and the gate opens (its
+free end moves downstream by more than 2 spacings).
+Coupled restart: elasticGate to 0.06 s in one go and stopped at 0.03 s
+and restarted end at the same particles (RESTART_TOLERANCE) in as many
+steps.
+ParaView's reader loads the last time of obstacleFracture (with the damage
+and plastic strain fields) and sluiceGate.
 obstacleFracture: its validation's stability checks hold (runs to the end,
 no particle lost, water inside the tank, energy not growing); whether bonds
 broke is printed only (at this spacing none do).
@@ -32,8 +41,17 @@ sys.path.insert(0, os.path.join(os.path.dirname(here), "lib"))
 from caseTest import (CaseTest, copy_case, project_dir, run,  # noqa: E402
                       scratch, set_entry, table)
 sys.path.insert(0, os.path.join(project_dir, "etc", "python"))
+from fsiChecks import stability_checks  # noqa: E402
 from foamCloud import read_positions, times  # noqa: E402
-from foamMonitor import read_monitor  # noqa: E402
+from readClouds import read_clouds  # noqa: E402
+
+# The sluice gate's run: past the water's arrival (about 0.2 s) and the
+# opening of the gate
+SLUICE_END = 0.3
+
+# Restarted coupled run against the uninterrupted one: positions [m]
+# (ascii writes of 12 digits)
+RESTART_TOLERANCE = 1e-9
 
 # First peak of point A at 4 mm: value [m] and time [s] bands
 FIRST_PEAK = ((0.030, 0.060), (0.19, 0.28))
@@ -53,25 +71,10 @@ def prepare(t, name, work, dx, end):
     return case, code, out
 
 
-def nearest_squared(points, others, radius):
-    """Smallest squared distance from any of points to any of others,
-    through a bucket grid of the others (cell size radius)"""
-    grid = {}
-    for q in others:
-        grid.setdefault((int(q[0] // radius), int(q[1] // radius)),
-                        []).append(q)
-    best = math.inf
-    for p in points:
-        i, j = int(p[0] // radius), int(p[1] // radius)
-        for di in (-1, 0, 1):
-            for dj in (-1, 0, 1):
-                for q in grid.get((i + di, j + dj), ()):
-                    best = min(best, (p[0] - q[0]) ** 2 + (p[1] - q[1]) ** 2)
-    return best
-
-
-def stability(t, case, solid, dx, energy_scale):
-    """Momentum exchange, particle counts, no water in the solid, energy"""
+def stability(t, case, solid, tank, dx, energy_scale, depth):
+    """Momentum exchange, and fsiChecks' stability checks (run to the end,
+    particle counts, water in the tank and not in the solid, energy, the
+    solid's velocity noise below 0.1 sqrt(g depth))"""
     name = os.path.basename(case)
     forces = table(os.path.join(case, "postProcessing", "coupling", "0",
                                 "forces.dat"))
@@ -81,27 +84,27 @@ def stability(t, case, solid, dx, energy_scale):
     t.check("%s: fluid-on-solid + solid-on-fluid = 0 (worst %.1e of the"
             " force)" % (name, worst), worst < 1e-9)
 
-    series = times(case)
-    n0 = {b: len(read_positions(case, series[0][1], b))
-          for b in ("water", solid)}
-    closest = math.inf
-    for _, tn in series:
-        water = read_positions(case, tn, "water")
-        body = read_positions(case, tn, solid)
-        if len(water) != n0["water"] or len(body) != n0[solid]:
-            t.check("%s: no particle lost at time %s" % (name, tn), False)
-            return
-        closest = min(closest, nearest_squared(water, body, dx))
-    t.check("%s: no particle lost (%d written times)" % (name, len(series)),
-            True)
-    t.check("%s: no water particle inside the %s (closest %.2f dx >"
-            " 0.25 dx)" % (name, solid, math.sqrt(closest) / dx),
-            math.sqrt(closest) > 0.25 * dx)
+    for what, good in stability_checks(case, solid, tank, dx, energy_scale,
+                                       velocity_scale=math.sqrt(9.81 * depth)):
+        t.check("%s: %s" % (name, what), good)
 
-    energy = read_monitor(case, "energy")
-    rise = max(energy["total"]) - energy["total"][0]
-    t.check("%s: total energy not growing (rise %.2e J/m <= %.2e)"
-            % (name, rise, 1e-3 * energy_scale), rise <= 1e-3 * energy_scale)
+
+def reader_sees(t, case, solid, arrays):
+    """ParaView's reader (vtkOpenFOAMReader) loads the last time's clouds:
+    the water and the solid with their particle counts, and the solid's
+    fields 'arrays'"""
+    name = os.path.basename(case)
+    last = times(case)[-1]
+    clouds = read_clouds(case, last[0])
+    for body in ("water", solid):
+        n = len(read_positions(case, last[1], body))
+        got = clouds.get(body, {"particles": -1})["particles"]
+        t.check("%s: the reader sees %s's %d particles at %s s (%d)"
+                % (name, body, n, last[1], got), got == n)
+    seen = set(clouds.get(solid, {"arrays": {}})["arrays"])
+    t.check("%s: the reader sees the %s's %s" % (name, solid,
+                                                 ", ".join(arrays)),
+            set(arrays) <= seen, str(sorted(seen)))
 
 
 def elastic_obstacle(t, work):
@@ -116,7 +119,8 @@ def elastic_obstacle(t, work):
         t.check("first peak %.4f m at %.3f s within %g-%g m, %g-%g s"
                 % (x, tp, x0, x1, t0, t1), x0 <= x <= x1 and t0 <= tp <= t1)
     # rho g H^2 W/2 of the column (H = 2L = 0.292, W = L = 0.146)
-    stability(t, case, "obstacle", 0.004, 1000 * 9.81 * 0.292 ** 2 * 0.146 / 2)
+    stability(t, case, "obstacle", (0, 0.584), 0.004,
+              1000 * 9.81 * 0.292 ** 2 * 0.146 / 2, 0.292)
 
 
 def elastic_gate(t, work):
@@ -124,7 +128,8 @@ def elastic_gate(t, work):
     if code != 0:
         return
     # rho g H^2 W/2 of the water (H = 0.14, W = 0.1)
-    stability(t, case, "gate", 0.0025, 1000 * 9.81 * 0.14 ** 2 * 0.1 / 2)
+    stability(t, case, "gate", (0, 0.5), 0.0025,
+              1000 * 9.81 * 0.14 ** 2 * 0.1 / 2, 0.14)
 
 
 def obstacle_fracture(t, work):
@@ -136,12 +141,65 @@ def obstacle_fracture(t, work):
     lines = [line for line in out.splitlines()
              if line.startswith("met: ") or line.startswith("MISSED: ")]
     t.check("obstacleFracture: validation ran", len(lines) >= 6, out[-1500:])
+    reader_sees(t, case, "obstacle", ("damage", "plasticStrain", "U"))
     for line in lines:
         what = line.split(": ", 1)[1]
         if what.startswith("bonds broke"):
             print("           obstacleFracture: " + what)
             continue
         t.check("obstacleFracture: " + what, line.startswith("met: "))
+
+
+def sluice_gate(t, work):
+    case, code, out = prepare(t, "sluiceGate", work, 0.0035, SLUICE_END)
+    if code != 0:
+        return
+    # rho g H^2 W/2 of the column (H = 0.2, W = 0.5)
+    stability(t, case, "gate", (0, 1.5), 0.0035,
+              1000 * 9.81 * 0.2 ** 2 * 0.5 / 2, 0.2)
+    reader_sees(t, case, "gate", ("U", "p"))
+    m = re.search(r"^(met|MISSED): the gate opens.*$", out, re.M)
+    t.check("sluiceGate: " + (m.group(0) if m else "validation printed"
+                              " whether the gate opens"),
+            m is not None and m.group(1) == "met", out[-1500:])
+
+
+def coupled_restart(t, work):
+    """elasticGate at 2.5 mm: a run to 0.06 s in one go, and one stopped at
+    0.03 s and restarted from its last write (startFrom latestTime) end at
+    the same particles: the solid's last external force (the fluid's) and
+    its stress are written and read back"""
+    src = os.path.join(project_dir, "tutorials", "ulphPdFoam", "elasticGate")
+    cases = []
+    for name, end in (("gateOneGo", 0.06), ("gateRestarted", 0.03)):
+        case = copy_case(src, os.path.join(work, name))
+        set_entry(case, "system/controlDict", "writeInterval", 0.03)
+        set_entry(case, "system/controlDict", "endTime", end)
+        outs = [run([app], case) for app in ("blockMesh", "seedParticles",
+                                              "ulphPdFoam")]
+        cases.append((case, outs))
+    two = cases[1][0]
+    set_entry(two, "system/controlDict", "startFrom", "latestTime")
+    set_entry(two, "system/controlDict", "endTime", 0.06)
+    rest = run(["ulphPdFoam"], two)
+    outs = cases[0][1] + cases[1][1] + [rest]
+    t.check("coupled restart: the runs succeed",
+            all(code == 0 for code, _ in outs),
+            "".join(out for _, out in outs)[-2000:])
+    if not all(code == 0 for code, _ in outs):
+        return
+    one = cases[0][0]
+    diff = 0.0
+    for body in ("water", "gate"):
+        a = read_positions(one, "0.06", body)
+        b = read_positions(two, "0.06", body)
+        diff = max([diff] + [max(abs(p - q) for p, q in zip(u, v))
+                             for u, v in zip(a, b)])
+    t.check("coupled restart ends where the uninterrupted run does (max"
+            " difference %.1e m)" % diff, diff < RESTART_TOLERANCE)
+    steps = [out.count("\nTime = ") for _, out in (outs[2], outs[5], rest)]
+    t.check_equal("coupled restart takes the same number of steps",
+                  steps[1] + steps[2], steps[0])
 
 
 def main():
@@ -151,6 +209,8 @@ def main():
         elastic_obstacle(t, work)
         obstacle_fracture(t, work)
         elastic_gate(t, work)
+        sluice_gate(t, work)
+        coupled_restart(t, work)
     finally:
         shutil.rmtree(work, ignore_errors=True)
     return t.finish()

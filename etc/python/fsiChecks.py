@@ -1,0 +1,129 @@
+"""The stability checks of a fluid-structure run that has no measurement to
+compare with (BENCHMARKS: 'runs to the end, stable, no particle lost'),
+shared by the validation scripts of the FSI tutorials and the case tests.
+
+    from fsiChecks import stability_checks
+    for what, good in stability_checks(case, "gate", (0, 1.5), dx, scale):
+        ...
+"""
+import math
+import os
+import re
+
+from foamCloud import read_cloud, read_positions, times
+from foamMonitor import read_monitor
+
+
+def end_time(case):
+    """endTime of system/controlDict"""
+    m = re.search(r"^endTime\s+([0-9.eE+-]+);",
+                  open(os.path.join(case, "system", "controlDict")).read(),
+                  re.M)
+    return float(m.group(1))
+
+
+def closest_distance(points, others, radius):
+    """Smallest distance from any of points to any of others, searched
+    through a bucket grid of the others (cell size radius); inf when none
+    is closer than radius"""
+    grid = {}
+    for q in others:
+        grid.setdefault((int(q[0] // radius), int(q[1] // radius)),
+                        []).append(q)
+    best = math.inf
+    for p in points:
+        i, j = int(p[0] // radius), int(p[1] // radius)
+        for di in (-1, 0, 1):
+            for dj in (-1, 0, 1):
+                for q in grid.get((i + di, j + dj), ()):
+                    best = min(best, (p[0] - q[0]) ** 2 + (p[1] - q[1]) ** 2)
+    return math.sqrt(best)
+
+
+def velocity_noise(case, body, dx):
+    """Largest particle-scale velocity noise of a body over the written
+    times: the deviation of a particle's velocity from the mean velocity of
+    its neighbours within 1.6 dx (its nearest lattice neighbours). A
+    smoothly deforming body has a deviation of order (velocity gradient) x
+    dx; an odd-even (zero-energy) mode one of its own amplitude."""
+    r = 1.6 * dx
+    worst = 0.0
+    for _, name in times(case):
+        cloud = read_cloud(case, name, body)
+        if "U" not in cloud:
+            continue
+        x, U = cloud["positions"], cloud["U"]
+        grid = {}
+        for i, p in enumerate(x):
+            grid.setdefault((int(p[0] // r), int(p[1] // r)), []).append(i)
+        for i, p in enumerate(x):
+            ci, cj = int(p[0] // r), int(p[1] // r)
+            near = [j for di in (-1, 0, 1) for dj in (-1, 0, 1)
+                    for j in grid.get((ci + di, cj + dj), ())
+                    if j != i and (x[j][0] - p[0]) ** 2
+                    + (x[j][1] - p[1]) ** 2 < r * r]
+            if not near:
+                continue
+            mean = [sum(U[j][d] for j in near) / len(near) for d in (0, 1)]
+            worst = max(worst, math.hypot(U[i][0] - mean[0],
+                                          U[i][1] - mean[1]))
+    return worst
+
+
+def stability_checks(case, solid, tank, dx, energy_scale, fluid="water",
+                     velocity_scale=None):
+    """[(what, met)] for a run of the fluid 'fluid' on the solid 'solid':
+    - the run reached endTime (the solver stops on a NaN or an escaped
+      particle, naming both);
+    - the fluid and the solid keep their particles at every written time;
+    - every fluid particle is inside the tank at the last time: walls at
+      x = tank[0], x = tank[1] and y = 0 penetrated by less than dx/2 (the
+      dam break's criterion: the first ghost layer lies at dx/2);
+    - no fluid particle closer than dx/4 to a solid particle at any written
+      time (a fluid particle inside the solid);
+    - the total energy (energy monitor) never rises above its start by
+      more than 1e-3 of energy_scale (the fluid's initial potential energy,
+      J/m in 2D);
+    - with velocity_scale (e.g. sqrt(g H) of the fluid): the solid's
+      particle-scale velocity noise (velocity_noise) below 0.1 of it at
+      every written time (smooth deformation at impact: up to 0.045 of it
+      in sluiceGate). The per-particle forces of a coupling excite the
+      solid's odd-even modes; undamped they grow (2 m/s in the rubber gate
+      of elasticGate by 0.3 s) and throw fluid particles out."""
+    series = times(case)
+    t1 = series[-1][0]
+    checks = [("ran to endTime %g s (last time %g s)" % (end_time(case), t1),
+               abs(t1 - end_time(case)) < 1e-9)]
+
+    n0 = {b: len(read_positions(case, series[0][1], b))
+          for b in (fluid, solid)}
+    lost, closest = None, math.inf
+    for value, name in series:
+        fl = read_positions(case, name, fluid)
+        so = read_positions(case, name, solid)
+        if len(fl) != n0[fluid] or len(so) != n0[solid]:
+            lost = value
+            break
+        closest = min(closest, closest_distance(fl, so, dx))
+    checks.append(("%s and %s keep their %d and %d particles (%d written"
+                   " times)%s" % (fluid, solid, n0[fluid], n0[solid],
+                                  len(series), "" if lost is None else
+                                  ": lost at %g s" % lost), lost is None))
+    fl = read_positions(case, series[-1][1], fluid)
+    depth = max(max(tank[0] - p[0], p[0] - tank[1], -p[1]) for p in fl)
+    checks.append(("every %s particle inside the tank (deepest wall"
+                   " penetration %.2f dx < 0.5 dx)" % (fluid, depth / dx),
+                   depth < 0.5 * dx))
+    checks.append(("no %s particle inside the %s (closest %.2f dx > 0.25 dx)"
+                   % (fluid, solid, closest / dx), closest > 0.25 * dx))
+
+    energy = read_monitor(case, "energy")
+    rise = max(energy["total"]) - energy["total"][0]
+    checks.append(("total energy not growing (largest rise %.3g J/m <= %.3g)"
+                   % (rise, 1e-3 * energy_scale), rise <= 1e-3 * energy_scale))
+    if velocity_scale is not None:
+        noise = velocity_noise(case, solid, dx)
+        checks.append(("the %s's particle-scale velocity noise %.3g m/s <"
+                       " 0.1 x %.3g m/s" % (solid, noise, velocity_scale),
+                       noise < 0.1 * velocity_scale))
+    return checks
