@@ -6,7 +6,8 @@ Description
     deformation gradient is exact for affine maps (eq. 36), the linear
     elastic patch test (uniform strain: uniform stress, no interior force),
     bonds break at the critical stretch (eq. 47) and the damage follows
-    (eq. 49), broken bonds survive a write and read by particle id, and the
+    (eq. 49), a particle that lost a bond falls back from the second order
+    fit to eq. 36, broken bonds survive a write and read by particle id, and the
     odd-even zero-energy mode grows without Silling's stabilisation and
     stays bounded with it; the bond viscosity keeps linear and angular
     momentum, is blind to rigid motion and only dissipates.
@@ -362,6 +363,56 @@ TEST(nosbPd, bondsBreakAtTheCriticalStretch)
             1e-12
         );
     }
+}
+
+
+TEST(nosbPd, aParticleThatLostABondFallsBackToTheFirstOrderFit)
+{
+    // Order 2 on an intact family, order 1 (eq. 36) once a bond is broken:
+    // break the bonds of a face particle to its own face column and below
+    // (a crack face), and compare its weights with the order 1 lattice
+    // broken alike; an intact face particle keeps its order 2 weights
+    pdLattice L2(2, 12, 0.1, 2), L1(2, 12, 0.1, 1);
+    const label cracked = 0 + 12*5;     // on the face x = 0, row 5
+    const label intactFace = 0 + 12*9;  // same face, far from the crack
+    for (pdLattice* L : {&L2, &L1})
+    {
+        const double* X0 = L->X0();
+        for (label b = L->fam->begin(cracked); b < L->fam->end(cracked); ++b)
+        {
+            const label j = L->fam->neighbour(b);
+            if (X0[2*j] == X0[2*cracked] || X0[2*j + 1] < X0[2*cracked + 1])
+            {
+                L->fam->breakBond(b);
+                L->fam->breakBond(L->fam->reverse(b));
+            }
+        }
+        L->updateShape();
+    }
+
+    auto weightsDiffer = [&](const label i)
+    {
+        scalar d = 0;
+        for (label b = L2.fam->begin(i); b < L2.fam->end(i); ++b)
+        {
+            for (label a = 0; a < 2; ++a)
+            {
+                d = max(d, mag(L2.g[2*b + a] - L1.g[2*b + a]));
+            }
+        }
+        return d*L2.dx;
+    };
+    EXPECT_LT(weightsDiffer(cracked), 1e-12);
+    EXPECT_GT(weightsDiffer(intactFace), 1e-3);
+
+    // Still exact for an affine map over the remaining bonds
+    L2.affine(tensor(1.02, 0.15, 0, -0.11, 0.97, 0, 0, 0, 1), vector(1, 2, 0));
+    L2.gradients();
+    const tensor F = L2.Fof(cracked);
+    EXPECT_NEAR(F.xx(), 1.02, 1e-12);
+    EXPECT_NEAR(F.xy(), 0.15, 1e-12);
+    EXPECT_NEAR(F.yx(), -0.11, 1e-12);
+    EXPECT_NEAR(F.yy(), 0.97, 1e-12);
 }
 
 

@@ -7,7 +7,10 @@ Description
     along as Q sigma Q^T), hypoelastic gives linear elasticity for a small
     strain in 3D, plane strain and plane stress, and the Drucker-Prager
     return mapping lands on the yield surface (cone and apex) and leaves
-    admissible states alone.
+    admissible states alone, follows the closed form of the flow rule with
+    dilation, keeps a plane strain particle admissible along a long path of
+    stretch, shear and rotation, and carries a yielded state through a
+    rigid rotation without further flow.
 
 \*---------------------------------------------------------------------------*/
 
@@ -201,6 +204,176 @@ TEST(druckerPrager, returnMappingStaysOnTheYieldSurface)
     EXPECT_GT(nElastic, 20);
     EXPECT_GT(nPlastic, 20);
     EXPECT_GT(nApex, 5);
+}
+
+
+TEST(druckerPrager, dilatantReturnFollowsTheFlowRule)
+{
+    // psi > 0: the closed form sigma = trial - dLambda (G s/q + 3 K a_psi I)
+    // with dLambda = f_trial/(G + 9 K a_phi a_psi) lands on f = 0, and the
+    // plastic volume change is 9 K a_psi dLambda in I1; beyond the apex
+    // (q_trial <= G dLambda) it returns to the apex I1 = k_c/a_phi
+    const scalar E = 30e6, nu = 0.25;
+    const scalar G = E/(2*(1 + nu)), K = E/(3*(1 - 2*nu));
+    const scalar deg = constant::mathematical::pi/180;
+    auto slope = [](const scalar a)
+    {
+        const scalar t = std::tan(a);
+        return t/std::sqrt(9 + 12*t*t);
+    };
+    const scalar aPhi = slope(30*deg), aPsi = slope(10*deg);
+
+    const label n = 300;
+    particleSet set("soil", 3);
+    set.resize(n);
+    autoPtr<constitutiveLaw> L = law
+    (
+        set,
+        "type druckerPrager; E 30e6; nu 0.25; frictionAngle 30;"
+        " cohesion 5e3; dilationAngle 10;"
+    );
+    const auto& dp = dynamic_cast<const constitutiveLaws::druckerPrager&>(L());
+    const scalar kc = dp.cohesionTerm();
+
+    std::mt19937 gen(11);
+    std::uniform_real_distribution<scalar> u(-1, 1);
+    label nCone = 0, nApex = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        const scalar size = std::pow(10, -5 + 3*(0.5*u(gen) + 0.5));
+        tensor H;
+        for (direction c = 0; c < 9; ++c) H[c] = size*u(gen);
+        H = symm(H);
+        const tensor F = tensor::I + H;
+
+        particleSet probe("probe", 3);
+        probe.resize(1);
+        autoPtr<constitutiveLaw> elastic =
+            law(probe, "type hypoelastic; E 30e6; nu 0.25;");
+        elastic->commit(0, tensor::I, F);
+        const tensor trial = storedSigma(probe, 0);
+        const scalar fTrial = dp.yieldFunction(trial);
+        if (fTrial <= 0) continue;
+
+        L->commit(i, tensor::I, F);
+        const tensor s = storedSigma(set, i);
+        const tensor st = dev(trial);
+        const scalar qt = std::sqrt(0.5*(st && st));
+        const scalar dLambda = fTrial/(G + 9*K*aPhi*aPsi);
+        if (qt - G*dLambda > 0)
+        {
+            ++nCone;
+            const tensor expect =
+                trial - dLambda*(G/qt*st + 3*K*aPsi*tensor::I);
+            EXPECT_LT(maxAbs(s - expect), 1e-9*maxAbs(trial));
+            EXPECT_NEAR(tr(trial) - tr(s), 9*K*aPsi*dLambda, 1e-9*kc);
+            EXPECT_NEAR(dp.yieldFunction(s), 0, 1e-9*kc);
+        }
+        else
+        {
+            ++nApex;
+            EXPECT_LT(maxAbs(s - kc/(3*aPhi)*tensor::I), 1e-9*kc);
+        }
+    }
+    EXPECT_GT(nCone, 20);
+    EXPECT_GT(nApex, 5);
+}
+
+
+TEST(druckerPrager, planeStrainPathStaysOnOrInsideTheCone)
+{
+    // A 2D plane strain particle through 400 random steps of stretch,
+    // shear and rotation, loaded far beyond yield (the baffle's root): the
+    // committed stress (with sigma_zz) is admissible after every step, on
+    // the yield surface whenever the step flowed, and the plastic strain
+    // never decreases
+    particleSet set("soil", 2);
+    set.resize(1);
+    autoPtr<constitutiveLaw> L = law
+    (
+        set,
+        "type druckerPrager; E 30e6; nu 0.25; plane strain;"
+        " frictionAngle 13; cohesion 5e3; dilationAngle 0;"
+    );
+    const auto& dp = dynamic_cast<const constitutiveLaws::druckerPrager&>(L());
+    const scalar kc = dp.cohesionTerm();
+    const particleField& sig = set.field("sigma");
+    const particleField& ep = set.field("plasticStrain");
+    auto cauchy = [&]()
+    {
+        return tensor
+        (
+            sig(0, 0), sig(0, 1), 0,
+            sig(0, 2), sig(0, 3), 0,
+            0, 0, set.field("sigmaZZ")(0, 0)
+        );
+    };
+
+    std::mt19937 gen(3);
+    std::uniform_real_distribution<scalar> u(-1, 1);
+    tensor Fold(tensor::I);
+    label nFlow = 0;
+    for (label k = 0; k < 400; ++k)
+    {
+        // Increment of up to 2e-3 (E eps ~ 12 c): many steps flow
+        const tensor Q = rotation(vector(0, 0, 1), 0.02*u(gen));
+        tensor H(Zero);
+        H.xx() = 2e-3*u(gen);
+        H.xy() = 2e-3*u(gen);
+        H.yx() = 2e-3*u(gen);
+        H.yy() = 2e-3*u(gen);
+        const tensor F = (Q & (tensor::I + H)) & Fold;
+        const scalar ep0 = ep(0, 0);
+
+        L->commit(0, Fold, F);
+        const tensor s = cauchy();
+        EXPECT_LE(dp.yieldFunction(s), 1e-9*kc) << "step " << k;
+        EXPECT_GE(ep(0, 0), ep0);
+        if (ep(0, 0) > ep0)
+        {
+            ++nFlow;
+            EXPECT_NEAR(dp.yieldFunction(s), 0, 1e-9*kc) << "step " << k;
+        }
+        Fold = F;
+    }
+    EXPECT_GT(nFlow, 50);
+}
+
+
+TEST(druckerPrager, rotationOfAYieldedStateIsObjective)
+{
+    // Yield in simple shear, then rotate rigidly in steps: the stress is
+    // carried as Q sigma Q^T, stays on the yield surface and the plastic
+    // strain does not grow
+    particleSet set("soil", 3);
+    set.resize(1);
+    autoPtr<constitutiveLaw> L = law
+    (
+        set,
+        "type druckerPrager; E 30e6; nu 0.25; frictionAngle 13;"
+        " cohesion 5e3; dilationAngle 0;"
+    );
+    const auto& dp = dynamic_cast<const constitutiveLaws::druckerPrager&>(L());
+    const scalar kc = dp.cohesionTerm();
+    const tensor F0(1, 2e-3, 0, 0, 1, 0, 0, 0, 1);
+    L->commit(0, tensor::I, F0);
+    const tensor sigma0 = storedSigma(set, 0);
+    const scalar ep0 = set.field("plasticStrain")(0, 0);
+    ASSERT_GT(ep0, 0);
+    ASSERT_NEAR(dp.yieldFunction(sigma0), 0, 1e-9*kc);
+
+    tensor Fold = F0;
+    const vector axis(0.2, -0.5, 1);
+    for (label k = 1; k <= 12; ++k)
+    {
+        const tensor F = rotation(axis, k*constant::mathematical::pi/24) & F0;
+        L->commit(0, Fold, F);
+        Fold = F;
+    }
+    const tensor Q = rotation(axis, constant::mathematical::pi/2);
+    EXPECT_LT(maxAbs(storedSigma(set, 0) - (Q & sigma0 & Q.T())), 1e-9*kc);
+    EXPECT_NEAR(dp.yieldFunction(storedSigma(set, 0)), 0, 1e-9*kc);
+    EXPECT_NEAR(set.field("plasticStrain")(0, 0), ep0, 1e-15);
 }
 
 

@@ -143,6 +143,44 @@ void Foam::meshless::bodyModels::nosbPd::updateBonds()
 
 
 template<int Dim>
+void Foam::meshless::bodyModels::nosbPd::rebase()
+{
+    const particleSet& set = body_.particles();
+    const label n = set.size();
+    nosbPdOperators::deformationGradients<Dim>
+    (
+        *families_, set.positions().data(), g_.data(), resolved_.data(),
+        F_.data()
+    );
+    std::copy(F_.data(), F_.data() + F_.size()*F_.nComponents(), Fold_.data());
+
+    constexpr label nt = Dim*Dim;
+    const constitutiveLaw& law = *law_;
+
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < n; ++i)
+    {
+        double* Pi = P_.data() + i*nt;
+        if (!resolved_[i])
+        {
+            for (label c = 0; c < nt; ++c) Pi[c] = 0;
+            continue;
+        }
+        tensor F(tensor::I);
+        for (label a = 0; a < Dim; ++a)
+        {
+            for (label b = 0; b < Dim; ++b) F(a, b) = F_(i, a*Dim + b);
+        }
+        const tensor P = law.stress(i, F, F);
+        for (label a = 0; a < Dim; ++a)
+        {
+            for (label b = 0; b < Dim; ++b) Pi[a*Dim + b] = P(a, b);
+        }
+    }
+}
+
+
+template<int Dim>
 void Foam::meshless::bodyModels::nosbPd::evaluate
 (
     const scalar t,
@@ -153,13 +191,6 @@ void Foam::meshless::bodyModels::nosbPd::evaluate
     const particleSet& set = body_.particles();
     const label n = set.size();
     const double* x = set.positions().data();
-
-    if (s0_ > 0)
-    {
-        const label nBroken =
-            nosbPdOperators::breakBonds<Dim>(*families_, X0_.data(), x, s0_);
-        if (nBroken) updateBonds<Dim>();
-    }
 
     nosbPdOperators::deformationGradients<Dim>
     (
@@ -196,6 +227,22 @@ void Foam::meshless::bodyModels::nosbPd::evaluate
         {
             law.commit(i, Fold, F);
             for (label c = 0; c < nt; ++c) Fold_(i, c) = F_(i, c);
+        }
+    }
+
+    // Bonds break at the end of an accepted step, the material state of the
+    // step committed. The broken bonds change the sums (weights g, F) but not
+    // the material: F and Fold are recomputed over the intact bonds at the
+    // same positions and P from the committed stress (the step from F to
+    // F), so the next step's increment F - Fold holds no jump of the weights
+    if (commit && s0_ > 0)
+    {
+        const label nBroken =
+            nosbPdOperators::breakBonds<Dim>(*families_, X0_.data(), x, s0_);
+        if (nBroken)
+        {
+            updateBonds<Dim>();
+            rebase<Dim>();
         }
     }
 
@@ -256,6 +303,24 @@ void Foam::meshless::bodyModels::nosbPd::connect(particleScene& scene)
 
     const label nRead =
         families_->readBroken(set, runTime, runTime.timeName());
+    if (s0_ > 0)
+    {
+        // A state written by this model has these broken already
+        if (body_.dim() == 2)
+        {
+            nosbPdOperators::breakBonds<2>
+            (
+                *families_, X0_.data(), set.positions().data(), s0_
+            );
+        }
+        else
+        {
+            nosbPdOperators::breakBonds<3>
+            (
+                *families_, X0_.data(), set.positions().data(), s0_
+            );
+        }
+    }
     if (body_.dim() == 2) updateBonds<2>();
     else updateBonds<3>();
 
@@ -396,6 +461,8 @@ void Foam::meshless::bodyModels::nosbPd::write
     if (s0_ > 0)
     {
         families_->writeBroken(body_.particles(), runTime, timeName);
+        Info<< "    nosbPd " << body_.name() << ": "
+            << families_->nBrokenSides()/2 << " broken bonds" << endl;
     }
 }
 
