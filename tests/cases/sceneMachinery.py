@@ -11,7 +11,8 @@
 - purgeWrite keeps the last N times; vtp output is readable by VTK;
 - bad input stops with the file, the keyword and what was expected, and
   leaves every file of the case as it was;
-- a blow-up stops with a diagnosis and the last good state on disk.
+- a blow-up stops with a diagnosis and the last good state on disk (a
+  particle outside the scene's escapeBox).
 """
 import os
 import shutil
@@ -171,6 +172,10 @@ BAD = [
     ("unknown kernel", "constant/particleProperties", "density     1000;",
      "density     1000; kernel { type quintic; smoothingLengthRatio 1.3; }",
      ["quintic", "wendlandC2", "cubicSpline", "gaussian"]),
+    ("escape box inside the mesh", "constant/particleProperties",
+     "vtp         no;",
+     "vtp         no; escapeBox { min (0 0 0); max (0.01 0.01 0.01); }",
+     ["escapeBox", "bounds", "particleProperties"]),
     ("negative maxCo", "system/controlDict", "maxCo           0.25;",
      "maxCo           -1;", ["maxCo", "controlDict", "> 0"]),
     ("adaptive without maxCo", "system/controlDict",
@@ -211,10 +216,13 @@ def test_blow_up(t, work):
     text = open(path).read().replace(
         "gravity { value (0 -9.81 0); }",
         "gravity { value (0 -9.81 0); } damping { coefficient 5000; }")
-    open(path, "w").write(text)     # c dt = 5: the explicit update diverges
+    # c dt = 5: the explicit update diverges; out of the scene's escape box
+    text += "\nescapeBox { min (-5 -5 -1); max (5 5 1); }\n"
+    open(path, "w").write(text)
     code, out = run(["particleFoam"], case)
     t.check("blow-up stops the run", code != 0, out[-500:])
     for words in ("Blow-up at time", "body drop", "left the domain",
+                  "(-5 -5 -1) (5 5 1)",
                   "Last good state on disk: time 0", "deltaT"):
         t.check("diagnosis says '%s'" % words, words in out, out[-1200:])
     t.check("the warning at start named the unstable step",

@@ -88,10 +88,27 @@ Foam::meshless::particleScene::particleScene(const polyMesh& mesh)
         }
     }
 
-    // Escape box: the mesh with room for wall layers and a splash
+    // Escape box: the mesh with room for wall layers and a splash, or the
+    // scene's own
     domain_.inflate(0.1);
     domain_.min() -= vector::uniform(10*maxSpacing);
     domain_.max() += vector::uniform(10*maxSpacing);
+    if (const dictionary* box = dict_.findDict("escapeBox"))
+    {
+        const boundBox given(box->get<point>("min"), box->get<point>("max"));
+        if
+        (
+            !given.contains(mesh.bounds().min())
+         || !given.contains(mesh.bounds().max())
+        )
+        {
+            FatalIOErrorInFunction(*box)
+                << "escapeBox " << given << " does not contain the mesh's"
+                << " bounds " << mesh.bounds() << ": expected min below and"
+                << " max above them" << exit(FatalIOError);
+        }
+        domain_ = given;
+    }
 }
 
 
