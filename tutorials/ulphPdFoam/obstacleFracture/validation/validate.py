@@ -12,7 +12,9 @@ the baffle fractures:
     eq. 49 is written, with its largest value and the number of particles
     that lost more than half of their bonds;
   - the total energy (energy monitor) never rose above its start by more
-    than 1e-3 of the column's potential energy rho g (2L)^2 L/2 (61 J/m).
+    than 1e-3 of the column's potential energy rho g (2L)^2 L/2 (61 J/m);
+  - the baffle's particle-scale velocity noise (fsiChecks.velocity_noise)
+    stays below 0.1 sqrt(g 2L).
 
 Writes validation/result[-dx<spacing>].md and damage[-dx<spacing>].png (the
 particles at the last time, the baffle coloured by damage).
@@ -20,6 +22,7 @@ With --check, exits 1 when a check fails.
 
 Usage: validate.py <case> [--check]
 """
+import math
 import os
 import re
 import sys
@@ -30,6 +33,7 @@ project = os.environ.get("MESHLESS_PROJECT",
 sys.path.insert(0, os.path.join(project, "etc", "python"))
 from foamCloud import read_cloud, times  # noqa: E402
 from foamMonitor import case_spacing, pyplot, run_cost  # noqa: E402
+from fsiChecks import velocity_noise  # noqa: E402
 
 
 def log_cost(log_file):
@@ -179,6 +183,11 @@ def main():
     scale = 1000 * 9.81 * 0.292 ** 2 * 0.146 / 2
     checks.append(("total energy not growing (largest rise %.3g J/m <= %.3g)"
                    % (rise, 1e-3 * scale), rise <= 1e-3 * scale))
+    noise = velocity_noise(case, "obstacle", dx)
+    vScale = math.sqrt(9.81 * 0.292)
+    checks.append(("the obstacle's particle-scale velocity noise %.3g m/s <"
+                   " 0.1 x %.3g m/s (fsiChecks)" % (noise, vScale),
+                   noise < 0.1 * vScale))
 
     ok = all(c[1] for c in checks)
     for what, good in checks:
