@@ -6,7 +6,8 @@ the baffle fractures:
   - the run reached endTime (the solver stops on a NaN or an escaped
     particle, naming both);
   - every body keeps its particles, and every water particle below the
-    walls' top is inside the tank (0 <= x <= 0.584, y >= 0); the tank is
+    walls' top is inside the tank (0 <= x <= 0.584, y >= 0, walls
+    penetrated by less than dx/2 as in fsiChecks); the tank is
     open at the top, so a splash above it is counted, not failed;
   - bonds broke (lagrangian/obstacle/brokenBonds) and the damage field of
     eq. 49 is written, with its largest value and the number of particles
@@ -158,10 +159,14 @@ def main():
     # above the walls and land beyond them, which no wall leaked
     below = [p for p in water if p[1] < TANK]
     above = [p for p in water if p[1] >= TANK]
-    inside = all(0 <= p[0] <= TANK and p[1] >= 0 for p in below)
+    # inside: walls penetrated by less than dx/2, the criterion of the dam
+    # break and fsiChecks (the first ghost layer lies at dx/2)
+    depth = max([0.0] + [max(-p[0], p[0] - TANK, -p[1]) for p in below])
+    inside = depth < 0.5 * dx
     checks.append(("every water particle below the walls' top (%g m) inside"
-                   " the tank; %d above it (splash), %d of those beyond the"
-                   " side walls" % (TANK, len(above),
+                   " the tank (deepest wall penetration %.2f dx < 0.5 dx);"
+                   " %d above it (splash), %d of those beyond the"
+                   " side walls" % (TANK, depth / dx, len(above),
                                     sum(1 for p in above
                                         if not 0 <= p[0] <= TANK)),
                    inside))
