@@ -34,7 +34,7 @@ project = os.environ.get("MESHLESS_PROJECT",
 sys.path.insert(0, os.path.join(project, "etc", "python"))
 from foamCloud import read_cloud, times  # noqa: E402
 from foamMonitor import case_spacing, pyplot, run_cost  # noqa: E402
-from fsiChecks import velocity_noise  # noqa: E402
+from fsiChecks import end_time, velocity_noise  # noqa: E402
 
 
 def log_cost(log_file):
@@ -56,13 +56,6 @@ def log_cost(log_file):
 DEFAULT_DX = 0.002
 TANK = 0.584
 
-
-
-def end_time(case):
-    m = re.search(r"^endTime\s+([0-9.eE+-]+);",
-                  open(os.path.join(case, "system", "controlDict")).read(),
-                  re.M)
-    return float(m.group(1))
 
 
 def broken_bonds(case, name):
