@@ -143,7 +143,7 @@ void Foam::meshless::bodyModels::ulph::connect(particleScene& scene)
                 << wb.dict().get<word>("model") << ": expected ghostWall"
                 << exit(FatalIOError);
         }
-        attach(*wall);
+        attach(*wall, true);
     }
     cells_.reset(new cellLinkedList(dim, W.radius()*(1 + skin_)));
     lambdaFloor_ = floorRatio_*
@@ -226,7 +226,11 @@ void Foam::meshless::bodyModels::ulph::hydrostaticStart()
 }
 
 
-void Foam::meshless::bodyModels::ulph::attach(ghostBoundary& ghosts)
+void Foam::meshless::bodyModels::ulph::attach
+(
+    ghostBoundary& ghosts,
+    const bool wall
+)
 {
     const smoothingKernel& W = body_.kernel();
     particleBody& gb = ghosts.ghostBody();
@@ -239,6 +243,7 @@ void Foam::meshless::bodyModels::ulph::attach(ghostBoundary& ghosts)
     }
     ghosts.prepare(W);
     walls_.push_back(&ghosts);
+    isWall_.push_back(wall);
     wallBodies_.push_back(&gb);
     ghostForce_.push_back(Zero);
 
@@ -259,7 +264,7 @@ void Foam::meshless::bodyModels::ulph::attach(ghostBoundary& ghosts)
 
 void Foam::meshless::bodyModels::ulph::addGhosts(ghostBoundary& ghosts)
 {
-    attach(ghosts);
+    attach(ghosts, false);
 }
 
 
@@ -347,6 +352,7 @@ void Foam::meshless::bodyModels::ulph::setContext()
     ctx_.massSrc.resize(nSrc);
     Ssrc_.resize(nSrc);
     Ucont_.resize(nSrc);
+    ctx_.wallSource.assign(nSrc, false);
 
     ctx_.sources[0] = {&own_, ctx_.x, V_.data()};
     ctx_.Usrc[0] = U_.data();
@@ -362,6 +368,7 @@ void Foam::meshless::bodyModels::ulph::setContext()
         ctx_.massSrc[k + 1] = walls_[k]->mass();
         Ssrc_[k + 1] = walls_[k]->S();
         Ucont_[k + 1] = walls_[k]->Ucont();
+        ctx_.wallSource[k + 1] = isWall_[k];
     }
 }
 
