@@ -27,18 +27,38 @@ def read_monitor(case, name):
 
 
 def run_cost(log_file):
-    """Steps, wall time of the time loop [s], particle-steps per second and
-    particle count of a solver log"""
+    """Steps, wall and CPU time [s], particle-steps per second, particle
+    count and number of runs of a solver log. The log may hold a run and its
+    restarts (the solver's output appended, each run from 'Create time'):
+    their times add up. A run's wall time is its time loop's, from its cost
+    table; a run that stopped (or is still going) has no table, and its last
+    ClockTime stands for it. The solver's particle-steps per second cover
+    one whole run; otherwise the rate follows from the steps, particles and
+    wall time."""
     log = open(log_file).read()
-    loop = re.findall(r"time loop \(all\)\s+([0-9.e+-]+)", log)
+    runs = re.split(r"^Create time$", log, flags=re.M)[1:] or [log]
+    timed = []
+    for run in runs:
+        loop = re.findall(r"time loop \(all\)\s+([0-9.e+-]+)", run)
+        clock = re.findall(r"ClockTime = ([0-9.]+) s", run)
+        cpu = re.findall(r"ExecutionTime = ([0-9.e+-]+) s", run)
+        if clock:
+            timed.append((float((loop or clock)[-1]), float(cpu[-1])))
     rate = re.findall(r"Particle-steps per second: ([0-9.e+-]+)", log)
     particles = re.findall(r"particles = (\d+)", log)
-    return {
+    cost = {
         "steps": len(re.findall(r"^Time = ", log, re.M)),
-        "wall": float(loop[-1]) if loop else float("nan"),
-        "rate": float(rate[-1]) if rate else float("nan"),
+        "wall": sum(w for w, _ in timed) if timed else float("nan"),
+        "cpu": sum(c for _, c in timed) if timed else float("nan"),
         "particles": int(particles[-1]) if particles else 0,
+        "runs": len(runs),
     }
+    if len(runs) == 1 and rate:
+        cost["rate"] = float(rate[-1])
+    else:
+        cost["rate"] = (cost["steps"] * cost["particles"] / cost["wall"]
+                        if cost["wall"] > 0 else float("nan"))
+    return cost
 
 
 def case_spacing(case, default):

@@ -28,7 +28,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
-from foamMonitor import case_spacing, interp  # noqa: E402
+from foamMonitor import case_spacing, interp, run_cost  # noqa: E402
 
 DEFAULT_DX = 0.0025
 PUBLISHED_X = 0.0083    # best published RMS of x [m] (Khayyer 2018)
@@ -44,16 +44,15 @@ def read_table(path):
     return rows
 
 
-
-
-def run_cost(case):
-    log = open(os.path.join(case, "log.ulphPdFoam")).read()
-    steps = len(re.findall(r"^deltaT = ", log, re.M))
-    particles = re.findall(r"particles = (\d+)", log)
-    clock = re.findall(r"ClockTime = (\d+) s", log)
-    sub = re.findall(r"(\d+) solid sub-steps per fluid step", log)
-    return (steps, int(particles[-1]) if particles else 0,
-            int(clock[-1]) if clock else 0, max(map(int, sub)) if sub else 1)
+def case_cost(case):
+    """foamMonitor's run_cost of log.ulphPdFoam, with the largest number of
+    solid sub-steps per fluid step the coupling took"""
+    log_file = os.path.join(case, "log.ulphPdFoam")
+    cost = run_cost(log_file)
+    sub = re.findall(r"(\d+) solid sub-steps per fluid step",
+                     open(log_file).read())
+    cost["sub"] = max(map(int, sub)) if sub else 1
+    return cost
 
 
 def main():
@@ -77,7 +76,7 @@ def main():
         errors[q] = (math.sqrt(sum(sq) / len(sq)) if sq else float("nan"),
                      len(sq))
 
-    steps, particles, clock, sub = run_cost(case)
+    cost = case_cost(case)
     dx = case_spacing(case, DEFAULT_DX)
     peak_x = max(dx_sim)
     peak_y = max(dy_sim)
@@ -117,11 +116,12 @@ def main():
         f.write("| peak y | %.4f m (experiment 0.0171 m) |\n" % peak_y)
         f.write("| best published RMS x (Khayyer 2018) | %.4f m |\n"
                 % PUBLISHED_X)
-        f.write("| particles | %d |\n| fluid steps | %d |\n" % (particles,
-                                                            steps))
-        f.write("| solid sub-steps per fluid step (max) | %d |\n" % sub)
-        f.write("| wall time | %d s (2 shared cores, OMP_NUM_THREADS=1) |\n"
-                % clock)
+        f.write("| particles | %d |\n| fluid steps | %d |\n"
+                % (cost["particles"], cost["steps"]))
+        f.write("| solid sub-steps per fluid step (max) | %d |\n"
+                % cost["sub"])
+        f.write("| wall time | %.0f s (2 shared cores, OMP_NUM_THREADS=1) |\n"
+                % cost["wall"])
 
     try:
         import matplotlib

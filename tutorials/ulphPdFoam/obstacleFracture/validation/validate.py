@@ -37,25 +37,8 @@ from foamMonitor import case_spacing, pyplot, run_cost  # noqa: E402
 from fsiChecks import end_time, velocity_noise  # noqa: E402
 
 
-def log_cost(log_file):
-    """run_cost of the solver log; a log of a run and its restarts (the
-    solver's output appended, each starting with 'Create time') adds up
-    the wall (clock) times of its runs, and the rate follows from them"""
-    cost = run_cost(log_file)
-    log = open(log_file).read()
-    segments = re.split(r"^Create time$", log, flags=re.M)[1:]
-    cost["runs"] = max(len(segments), 1)
-    if len(segments) > 1:
-        clock = [float(c[-1]) for c in
-                 (re.findall(r"ClockTime = ([0-9.]+) s", seg)
-                  for seg in segments) if c]
-        cost["wall"] = sum(clock)
-        cost["rate"] = cost["steps"] * cost["particles"] / cost["wall"]
-    return cost
-
 DEFAULT_DX = 0.002
 TANK = 0.584
-
 
 
 def broken_bonds(case, name):
@@ -201,7 +184,7 @@ def main():
                    % (t1, sMax, where[0], where[1]))
     print("%s; %s" % (firstText, stretchText))
 
-    cost = log_cost(os.path.join(case, "log.ulphPdFoam"))
+    cost = run_cost(os.path.join(case, "log.ulphPdFoam"))
     suffix = "" if abs(dx - DEFAULT_DX) < 1e-12 else "-dx%g" % dx
     with open(os.path.join(here, "result%s.md" % suffix), "w") as f:
         f.write("# Obstacle fracture: stability and damage\n\n")

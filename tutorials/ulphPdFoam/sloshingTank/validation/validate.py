@@ -38,6 +38,7 @@ project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
 from foamCloud import read_positions, times  # noqa: E402
+from foamMonitor import run_cost  # noqa: E402
 
 L, H, A0, T, G = 1.73, 0.5, 0.032, 1.875, 9.81
 XPROBE = 0.05
@@ -85,20 +86,20 @@ def extrema(series):
     return ext
 
 
-def run_cost(case):
-    log = open(os.path.join(case, "log.ulphPdFoam")).read()
-    clock = re.findall(r"ClockTime = ([0-9.]+) s", log)
-    rate = re.findall(r"Particle-steps per second: ([0-9.e+]+)", log)
+def case_cost(case):
+    """foamMonitor's run_cost of log.ulphPdFoam, with the water and wall
+    particles and the spacing of its scene"""
+    log_file = os.path.join(case, "log.ulphPdFoam")
+    cost = run_cost(log_file)
+    log = open(log_file).read()
     spacing = re.search(r"water: (\d+) particles, spacing ([0-9.e-]+)", log)
     nwall = re.search(r"tank: (\d+) particles", log)
-    return {
-        "steps": len(re.findall(r"^Time = ", log, re.M)),
-        "clock": float(clock[-1]) if clock else float("nan"),
-        "rate": float(rate[-1]) if rate else float("nan"),
+    cost.update({
         "water": int(spacing.group(1)) if spacing else 0,
         "dx": float(spacing.group(2)) if spacing else float("nan"),
         "walls": int(nwall.group(1)) if nwall else 0,
-    }
+    })
+    return cost
 
 
 def plot(sim, path):
@@ -125,7 +126,7 @@ def plot(sim, path):
 
 
 def main(case, check):
-    cost = run_cost(case)
+    cost = case_cost(case)
     dx = cost["dx"]
     sim = simulated(case, dx)
     window = [s for s in sim if s[0] <= 2 * T]
@@ -163,7 +164,7 @@ def main(case, check):
         " RMS difference / linear amplitude |",
         "|---|---|---|---|---|---|---|---|",
         "| %g m | %d | %d | %d | %.0f s | %.3g | %.2f %%: %s | %.1f %% |"
-        % (dx, cost["water"], cost["walls"], cost["steps"], cost["clock"],
+        % (dx, cost["water"], cost["walls"], cost["steps"], cost["wall"],
            cost["rate"], 100 * phase, "met" if ok else "MISSED", 100 * rms),
         "",
         "Set-up: ULPH-NOSBPD paper 4.3 (tank 1.73 x 1.15 m, depth 0.5 m, "

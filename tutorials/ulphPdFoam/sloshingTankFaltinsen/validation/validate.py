@@ -51,6 +51,7 @@ project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
 from foamCloud import read_positions, times  # noqa: E402
+from foamMonitor import run_cost  # noqa: E402
 
 L, H, A0, T, G = 1.73, 0.6, 0.032, 1.3, 9.81
 XPROBE = 0.05
@@ -157,41 +158,20 @@ def interp(series, t):
     return y0 if t1 == t0 else y0 + (y1 - y0) * (t - t0) / (t1 - t0)
 
 
-def run_cost(case):
-    """Steps, wall and CPU time and particles of log.ulphPdFoam; a log of a
-    run and its restarts (the solver's output appended, each starting with
-    'Create time') adds up the times of each"""
-    log = open(os.path.join(case, "log.ulphPdFoam")).read()
-    segments = re.split(r"^Create time$", log, flags=re.M)[1:] or [log]
-    clock, cpu = [], []
-    for seg in segments:
-        c = re.findall(r"ClockTime = ([0-9.]+) s", seg)
-        e = re.findall(r"ExecutionTime = ([0-9.e+]+) s", seg)
-        if c:
-            clock.append(float(c[-1]))
-            cpu.append(float(e[-1]))
-    clock = [sum(clock)] if clock else []
-    cpu = [sum(cpu)] if cpu else []
-    rate = re.findall(r"Particle-steps per second: ([0-9.e+]+)", log)
-    if len(segments) > 1:
-        rate = []       # per run: recomputed from the totals below
+def case_cost(case):
+    """foamMonitor's run_cost of log.ulphPdFoam (a run and its restarts add
+    up), with the water and wall particles and the spacing of its scene"""
+    log_file = os.path.join(case, "log.ulphPdFoam")
+    cost = run_cost(log_file)
+    log = open(log_file).read()
     spacing = re.search(r"water: (\d+) particles, spacing ([0-9.e-]+)", log)
     nwall = re.search(r"tank: (\d+) particles", log)
-    cost = {
-        "steps": len(re.findall(r"^Time = ", log, re.M)),
-        "clock": float(clock[-1]) if clock else float("nan"),
-        "cpu": float(cpu[-1]) if cpu else float("nan"),
-        "rate": float(rate[-1]) if rate else float("nan"),
+    cost.update({
         "water": int(spacing.group(1)) if spacing else 0,
         "dx": float(spacing.group(2)) if spacing else float("nan"),
         "walls": int(nwall.group(1)) if nwall else 0,
         "endTime": cost_end(case),
-    }
-    if not rate and clock:
-        # a run still going, stopped or restarted: the rate from the steps
-        # and particles so far
-        cost["rate"] = cost["steps"] * (cost["water"] + cost["walls"]) \
-            / cost["clock"]
+    })
     return cost
 
 
@@ -231,7 +211,7 @@ def plot(sim, exp, rows, path):
 
 
 def main(case, check):
-    cost = run_cost(case)
+    cost = case_cost(case)
     dx = cost["dx"]
     sim = simulated(case, dx)
     exp = experiment()
@@ -281,7 +261,7 @@ def main(case, check):
         "| %g m | %d | %d | %g s | %d | %.0f s (%.0f s) | %.3g | %d of %d |"
         " %.1f %%: %s | %+.1f %% | %.1f / %.1f | %.1f %% |"
         % (dx, cost["water"], cost["walls"], tend, cost["steps"],
-           cost["clock"], cost["cpu"], cost["rate"], len(good), len(rows), 100 * amp,
+           cost["wall"], cost["cpu"], cost["rate"], len(good), len(rows), 100 * amp,
            status, 100 * ratio, 100 * phase_max,
            100 * phase_mean, 100 * rms),
         "",
