@@ -653,4 +653,56 @@ TEST(nosbPd, bondViscosityKeepsMomentumIgnoresRigidMotionDissipates)
 }
 
 
+TEST(nosbPd, bondViscosityRelaxesSlowerThanItsStableStepAllows)
+{
+    // nosbPd::maxDeltaT takes dt <= maxCo rho0 h^2/eta for the bond
+    // viscosity. Explicit stepping of dv/dt = -A v is stable for
+    // dt lambda_max(A) <= 2, so lambda_max rho0 h^2/eta must stay below 2
+    // for any maxCo <= 1 (A is symmetric positive semi-definite: power
+    // iteration from a random start finds its largest eigenvalue)
+    for (const label dim : {2, 3})
+    {
+        pdLattice L(dim, dim == 2 ? 16 : 8, 0.1);
+        const label np = L.size();
+        const scalar eta = 250, rho0 = 1100, h = L.W->h();
+        std::mt19937 gen(3);
+        std::uniform_real_distribution<double> r(-1, 1);
+        std::vector<double> v(np*dim);
+        for (double& c : v) c = r(gen);
+
+        scalar lambda = 0;
+        for (int it = 0; it < 300; ++it)
+        {
+            std::fill(L.f.begin(), L.f.end(), 0.0);
+            if (dim == 2)
+            {
+                nosbPdOperators::bondViscosity<2>
+                (*L.fam, L.x(), v.data(), L.m.data(), eta, h, L.f.data());
+            }
+            else
+            {
+                nosbPdOperators::bondViscosity<3>
+                (*L.fam, L.x(), v.data(), L.m.data(), eta, h, L.f.data());
+            }
+            scalar vv = 0, vAv = 0, norm = 0;
+            for (label k = 0; k < np*dim; ++k)
+            {
+                const scalar Av = -L.f[k]/rho0;
+                vv += v[k]*v[k];
+                vAv += v[k]*Av;
+                norm += Av*Av;
+            }
+            lambda = vAv/vv;
+            norm = std::sqrt(norm);
+            ASSERT_GT(norm, 0);
+            for (label k = 0; k < np*dim; ++k) v[k] = -L.f[k]/rho0/norm;
+        }
+        const scalar ratio = lambda*rho0*h*h/eta;
+        EXPECT_GT(ratio, 0.1) << dim << "D: the bound should not be loose";
+        EXPECT_LT(ratio, 2) << dim << "D: lambda_max rho0 h^2/eta";
+        std::cout << dim << "D: lambda_max rho0 h^2/eta = " << ratio << std::endl;
+    }
+}
+
+
 // ************************************************************************* //

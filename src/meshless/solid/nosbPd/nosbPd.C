@@ -372,8 +372,17 @@ Foam::scalar Foam::meshless::bodyModels::nosbPd::maxDeltaT
     const scalar maxCo
 ) const
 {
+    const scalar h = body_.kernel().h();
     const scalar c = std::sqrt(law_->waveModulus()*(1 + Gs_)/rho0_);
-    return maxCo*body_.kernel().h()/(c + U_.maxMagnitude());
+    scalar dt = maxCo*h/(c + U_.maxMagnitude());
+    if (eta_ > 0)
+    {
+        // The bond dashpots relax a particle's velocity at a rate of about
+        // eta/(rho0 h^2): explicit stepping needs dt below its inverse.
+        // Binding only for alpha > 1.
+        dt = min(dt, maxCo*rho0_*h*h/eta_);
+    }
+    return dt;
 }
 
 
