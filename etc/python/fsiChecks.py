@@ -97,14 +97,17 @@ def velocity_noise(case, body, dx):
 
 
 def stability_checks(case, solid, tank, dx, energy_scale, fluid="water",
-                     velocity_scale=None):
+                     velocity_scale=None, walls_top=None):
     """[(what, met)] for a run of the fluid 'fluid' on the solid 'solid':
     - the run reached endTime (the solver stops on a NaN or an escaped
       particle, naming both);
     - the fluid and the solid keep their particles at every written time;
     - every fluid particle is inside the tank at the last time: walls at
       x = tank[0], x = tank[1] and y = 0 penetrated by less than dx/2 (the
-      dam break's criterion: the first ghost layer lies at dx/2);
+      dam break's criterion: the first ghost layer lies at dx/2). With
+      walls_top, the height where the side walls of an open tank end, only
+      the particles below it: a splash may fly over the walls and land
+      beyond them, which no wall leaked; those above are counted;
     - no fluid particle closer than dx/4 to a solid particle at any written
       time (a fluid particle inside the solid);
     - the total energy (energy monitor, over a run and its restarts:
@@ -136,10 +139,20 @@ def stability_checks(case, solid, tank, dx, energy_scale, fluid="water",
                                   len(series), "" if lost is None else
                                   ": lost at %g s" % lost), lost is None))
     fl = read_positions(case, series[-1][1], fluid)
-    depth = max(max(tank[0] - p[0], p[0] - tank[1], -p[1]) for p in fl)
-    checks.append(("every %s particle inside the tank (deepest wall"
-                   " penetration %.2f dx < 0.5 dx)" % (fluid, depth / dx),
-                   depth < 0.5 * dx))
+    top = math.inf if walls_top is None else walls_top
+    above = [p for p in fl if p[1] >= top]
+    depth = max((max(tank[0] - p[0], p[0] - tank[1], -p[1]) for p in fl
+                 if p[1] < top), default=0.0)
+    if walls_top is None:
+        what = ("every %s particle inside the tank (deepest wall penetration"
+                " %.2f dx < 0.5 dx)" % (fluid, depth / dx))
+    else:
+        what = ("every %s particle below the walls' top (%g m) inside the"
+                " tank (deepest wall penetration %.2f dx < 0.5 dx); %d above"
+                " it (splash), %d of those beyond the side walls"
+                % (fluid, walls_top, depth / dx, len(above),
+                   sum(1 for p in above if not tank[0] <= p[0] <= tank[1])))
+    checks.append((what, depth < 0.5 * dx))
     checks.append(("no %s particle inside the %s (closest %.2f dx > 0.25 dx)"
                    % (fluid, solid, closest / dx), closest > 0.25 * dx))
 
