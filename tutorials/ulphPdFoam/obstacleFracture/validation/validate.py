@@ -3,19 +3,18 @@
 the dam-break flow. There is no published measurement; the checks are the
 ones BENCHMARKS.md sets (runs to the end, stable, no particle lost) and that
 the baffle fractures:
-  - the run reached endTime (the solver stops on a NaN or an escaped
-    particle, naming both);
-  - every body keeps its particles, and every water particle below the
-    walls' top is inside the tank (0 <= x <= 0.584, y >= 0, walls
-    penetrated by less than dx/2 as in fsiChecks); the tank is
-    open at the top, so a splash above it is counted, not failed;
+  - fsiChecks' stability checks: the run reached endTime, the water and
+    the baffle keep their particles, every water particle below the walls'
+    top is inside the tank (walls at x = 0 and 0.584 m and the floor
+    penetrated by less than dx/2; the tank is open at the top, so a splash
+    above it is counted, not failed), none inside the baffle, the total
+    energy over the run and its restarts never rose above its start by
+    more than 1e-3 of the column's potential energy rho g (2L)^2 L/2
+    (61 J/m), the baffle's particle-scale velocity noise below
+    0.1 sqrt(g 2L);
   - bonds broke (lagrangian/obstacle/brokenBonds) and the damage field of
     eq. 49 is written, with its largest value and the number of particles
-    that lost more than half of their bonds;
-  - the total energy (energy monitor) never rose above its start by more
-    than 1e-3 of the column's potential energy rho g (2L)^2 L/2 (61 J/m);
-  - the baffle's particle-scale velocity noise (fsiChecks.velocity_noise)
-    stays below 0.1 sqrt(g 2L).
+    that lost more than half of their bonds.
 
 Writes validation/result[-dx<spacing>].md and damage[-dx<spacing>].png (the
 particles at the last time, the baffle coloured by damage).
@@ -34,11 +33,11 @@ project = os.environ.get("MESHLESS_PROJECT",
 sys.path.insert(0, os.path.join(project, "etc", "python"))
 from foamCloud import read_cloud, times  # noqa: E402
 from foamMonitor import case_spacing, pyplot, run_cost  # noqa: E402
-from fsiChecks import end_time, velocity_noise  # noqa: E402
+from fsiChecks import stability_checks  # noqa: E402
 
 
 DEFAULT_DX = 0.002
-TANK = 0.584
+TANK = 0.584           # the tank's width and the height of its walls (open top)
 
 
 def broken_bonds(case, name):
@@ -46,31 +45,6 @@ def broken_bonds(case, name):
     if not os.path.exists(path):
         return 0
     return len(re.findall(r"\(\s*\d+\s+\d+\s*\)", open(path).read()))
-
-
-def energy_total(case):
-    """The energy monitor's total over a run and its restarts. A restart's
-    monitor measures potential energy from the restart's own positions, so
-    its totals are shifted to continue the earlier run's at the restart's
-    first time."""
-    base = os.path.join(case, "postProcessing", "energy")
-    rows = []
-    for start in sorted(os.listdir(base), key=float):
-        own = []
-        for line in open(os.path.join(base, start, "energy.dat")):
-            if line.strip() and not line.startswith("#"):
-                values = [float(v) for v in line.split()]
-                own.append((values[0], values[-1]))
-        if not own:
-            continue
-        offset = 0.0
-        if rows:
-            before = [e for t, e in rows if t <= own[0][0] + 1e-12]
-            offset = (before[-1] if before else rows[0][1]) - own[0][1]
-        while rows and rows[-1][0] >= own[0][0]:
-            rows.pop()
-        rows.extend((t, e + offset) for t, e in own)
-    return [e for t, e in rows]
 
 
 def broken_pairs(case, name):
@@ -118,34 +92,15 @@ def main():
     dx = case_spacing(case, DEFAULT_DX)
 
     series = times(case)
-    t0, first = series[0]
     t1, last = series[-1]
-    checks = []
-    checks.append(("ran to endTime %g s (last time %g s)"
-                   % (end_time(case), t1),
-                   abs(t1 - end_time(case)) < 1e-9))
-    clouds = {}
-    for body in ("water", "obstacle", "tank"):
-        n0 = len(read_cloud(case, first, body)["positions"])
-        clouds[body] = read_cloud(case, last, body)
-        n1 = len(clouds[body]["positions"])
-        checks.append(("%s keeps its %d particles" % (body, n0), n0 == n1))
+    # rho g H^2 W/2 of the column (H = 2L = 0.292, W = L = 0.146)
+    checks = stability_checks(case, "obstacle", (0, TANK), dx,
+                              1000 * 9.81 * 0.292 ** 2 * 0.146 / 2,
+                              velocity_scale=math.sqrt(9.81 * 0.292),
+                              walls_top=TANK)
+    clouds = {body: read_cloud(case, last, body)
+              for body in ("water", "obstacle")}
     water = clouds["water"]["positions"]
-    # The tank is open at the top (its walls end at TANK): a splash may fly
-    # above the walls and land beyond them, which no wall leaked
-    below = [p for p in water if p[1] < TANK]
-    above = [p for p in water if p[1] >= TANK]
-    # inside: walls penetrated by less than dx/2, the criterion of the dam
-    # break and fsiChecks (the first ghost layer lies at dx/2)
-    depth = max([0.0] + [max(-p[0], p[0] - TANK, -p[1]) for p in below])
-    inside = depth < 0.5 * dx
-    checks.append(("every water particle below the walls' top (%g m) inside"
-                   " the tank (deepest wall penetration %.2f dx < 0.5 dx);"
-                   " %d above it (splash), %d of those beyond the"
-                   " side walls" % (TANK, depth / dx, len(above),
-                                    sum(1 for p in above
-                                        if not 0 <= p[0] <= TANK)),
-                   inside))
     nBroken = broken_bonds(case, last)
     damage = clouds["obstacle"]["damage"]
     checks.append(("bonds broke (%d)" % nBroken, nBroken > 0))
@@ -159,16 +114,6 @@ def main():
             break
     sMax, where = largest_intact_stretch(
         clouds["obstacle"], broken_pairs(case, last), 3 * dx)
-    total = energy_total(case)
-    rise = max(total) - total[0]
-    scale = 1000 * 9.81 * 0.292 ** 2 * 0.146 / 2
-    checks.append(("total energy not growing (largest rise %.3g J/m <= %.3g)"
-                   % (rise, 1e-3 * scale), rise <= 1e-3 * scale))
-    noise = velocity_noise(case, "obstacle", dx)
-    vScale = math.sqrt(9.81 * 0.292)
-    checks.append(("the obstacle's particle-scale velocity noise %.3g m/s <"
-                   " 0.1 x %.3g m/s (fsiChecks)" % (noise, vScale),
-                   noise < 0.1 * vScale))
 
     ok = all(c[1] for c in checks)
     for what, good in checks:
