@@ -57,23 +57,29 @@ void Foam::meshless::effects::artificialViscosity::add
     #pragma omp parallel for schedule(static)
     for (label i = 0; i < ctx.n; ++i)
     {
+        const Eigen::Map<const vectorD<Dim>> xi(ctx.x + size_t(i)*Dim);
         const Eigen::Map<const vectorD<Dim>> ui(ctx.U + size_t(i)*Dim);
         vectorD<Dim> s = vectorD<Dim>::Zero();
-        forEachNeighbour<Dim>
-        (
-            ctx.x, i, ctx.sources, W,
-            [&](size_t k, label j, const vectorD<Dim>& xij, const double wV)
+        for (size_t k = 0; k < ctx.sources.size(); ++k)
+        {
+            const neighbourSource& src = ctx.sources[k];
+            for (const label* jp = src.list->begin(i); jp != src.list->end(i); ++jp)
             {
+                const label j = *jp;
+                const vectorD<Dim> xij =
+                    Eigen::Map<const vectorD<Dim>>(src.x + size_t(j)*Dim) - xi;
                 const vectorD<Dim> uij =
                     Eigen::Map<const vectorD<Dim>>(ctx.Usrc[k] + size_t(j)*Dim)
                   - ui;
                 const double vx = uij.dot(xij);
                 if (vx < 0)
                 {
-                    s += (wV*vx/(xij.squaredNorm() + eps2))*xij;
+                    const double pi = vx/(xij.squaredNorm() + eps2);
+                    const double w = src.pairW(jp, xij.norm(), W);
+                    s += (w*pi*src.V[j])*xij;
                 }
             }
-        );
+        }
         const Eigen::Map<const tensorD<Dim>> Mi(ctx.Minv + size_t(i)*Dim*Dim);
         Eigen::Map<vectorD<Dim>>(a + size_t(i)*Dim) +=
             (coeff/ctx.rho[i])*(Mi*s);
