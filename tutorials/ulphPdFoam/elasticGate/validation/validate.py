@@ -2,7 +2,8 @@
 """Elastic gate (Antoci et al. 2007): free-end displacement vs experiment.
 
 Reads the free end's displacement written by the pointDisplacement monitor
-'freeEnd' (postProcessing/freeEnd/0/freeEnd.dat), interpolates it linearly
+'freeEnd' (postProcessing/freeEnd/<start>/freeEnd.dat of a run and its
+restarts), interpolates it linearly
 to the experiment's times (validation/antoci2007_freeEnd.dat) and prints the
 RMS error of x(t) and y(t) over the experiment's points inside the run.
 For scale, the RMS of the published numerical curves against the same
@@ -11,7 +12,7 @@ README.md): x 8.3 mm (Khayyer 2018 ISPH-SPH) to 10.8 mm (Ng 2020 SPH-VCPM),
 y 4.6 mm to 5.7 mm; the target (BENCHMARKS) is an RMS of x below those.
 
 Writes validation/result.md (or result-dx<spacing>.md for a spacing other
-than the tutorial's 2.5 mm) with the errors, peaks, particles, steps and
+than the tutorial's 1.25 mm) with the errors, peaks, particles, steps and
 wall time from log.ulphPdFoam, and freeEnd[-dx<spacing>].png.
 
 With --check, exits 1 when the run stopped before 0.36 s or its x RMS is
@@ -28,9 +29,10 @@ here = os.path.dirname(os.path.abspath(__file__))
 project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
-from foamMonitor import case_spacing, interp, run_cost  # noqa: E402
+from foamMonitor import (case_spacing, interp, read_monitor,  # noqa: E402
+                         run_cost)
 
-DEFAULT_DX = 0.0025
+DEFAULT_DX = 0.00125
 PUBLISHED_X = 0.0083    # best published RMS of x [m] (Khayyer 2018)
 
 
@@ -61,11 +63,8 @@ def main():
         print(__doc__)
         return 2
     case = args[0]
-    sim = [list(map(float, r)) for r in read_table(
-        os.path.join(case, "postProcessing", "freeEnd", "0", "freeEnd.dat"))]
-    ts = [r[0] for r in sim]
-    dx_sim = [r[1] for r in sim]
-    dy_sim = [r[2] for r in sim]
+    sim = read_monitor(case, "freeEnd")    # a run and its restarts
+    ts, dx_sim, dy_sim = sim["time"], sim["dx"], sim["dy"]
     ref = read_table(os.path.join(here, "antoci2007_freeEnd.dat"))
 
     errors = {}
@@ -120,8 +119,9 @@ def main():
                 % (cost["particles"], cost["steps"]))
         f.write("| solid sub-steps per fluid step (max) | %d |\n"
                 % cost["sub"])
-        f.write("| wall time | %.0f s (2 shared cores, OMP_NUM_THREADS=1) |\n"
-                % cost["wall"])
+        f.write("| wall time | %.0f s%s (2 shared cores, OMP_NUM_THREADS=1)"
+                " |\n" % (cost["wall"], "" if cost["runs"] == 1 else
+                          " in %d runs (restarts)" % cost["runs"]))
 
     try:
         import matplotlib
