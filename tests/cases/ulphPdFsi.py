@@ -19,16 +19,18 @@ elasticObstacle and elasticGate:
   of the water's initial potential energy, the solid's particle-scale
   velocity noise below 0.1 sqrt(g H) (etc/python/fsiChecks.py).
 sluiceGate (paper 4.5; 3.5 mm, the gate 2 particles thick, to 0.3 s):
-the momentum exchange and stability checks above, and the gate opens (its
+the momentum exchange and stability checks above, the log names the wall
+repulsion of thin layers, and the gate opens (its
 free end moves downstream by more than 2 spacings).
 Coupled restart: elasticGate to 0.06 s in one go and stopped at 0.03 s
 and restarted end at the same particles (RESTART_TOLERANCE) in as many
 steps.
 ParaView's reader loads the last time of obstacleFracture (with the damage
 and plastic strain fields) and sluiceGate.
-obstacleFracture: its validation's stability checks hold (runs to the end,
-no particle lost, water inside the tank, energy not growing); whether bonds
-broke is printed only (at this spacing none do).
+obstacleFracture: its validation's stability checks hold (fsiChecks: runs
+to the end, no particle lost, water below the walls' top inside the tank,
+no water inside the baffle, energy not growing, velocity noise); whether
+bonds broke is printed only (at this spacing none do).
 """
 import math
 import os
@@ -158,6 +160,9 @@ def sluice_gate(t, work):
     stability(t, case, "gate", (0, 1.5), 0.0035,
               1000 * 9.81 * 0.2 ** 2 * 0.5 / 2, 0.2)
     reader_sees(t, case, "gate", ("U", "p"))
+    log = open(os.path.join(case, "log.ulphPdFoam")).read()
+    t.check("sluiceGate: the log lists the walls' repulsion of thin layers",
+            "effect wallRepulsion" in log)
     m = re.search(r"^(met|MISSED): the gate opens.*$", out, re.M)
     t.check("sluiceGate: " + (m.group(0) if m else "validation printed"
                               " whether the gate opens"),
@@ -173,6 +178,8 @@ def coupled_restart(t, work):
     cases = []
     for name, end in (("gateOneGo", 0.06), ("gateRestarted", 0.03)):
         case = copy_case(src, os.path.join(work, name))
+        with open(os.path.join(case, "system", "resolution"), "w") as f:
+            f.write("dx 0.0025;\n")
         set_entry(case, "system/controlDict", "writeInterval", 0.03)
         set_entry(case, "system/controlDict", "endTime", end)
         outs = [run([app], case) for app in ("blockMesh", "seedParticles",
