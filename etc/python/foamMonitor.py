@@ -5,24 +5,37 @@ import os
 import re
 
 
-def read_monitor(case, name):
-    """Columns of monitor <name> as a dict: {'time': [...], column: [...]}"""
+def monitor_runs(case, name):
+    """Monitor <name> per run, in time order: [(columns, rows)], one per
+    start folder (a run and each of its restarts)"""
     base = os.path.join(case, "postProcessing", name)
-    starts = sorted(os.listdir(base), key=float)
-    columns, rows = None, []
-    for start in starts:
-        path = os.path.join(base, start, name + ".dat")
-        for line in open(path):
+    runs = []
+    for start in sorted(os.listdir(base), key=float):
+        columns, rows = None, []
+        for line in open(os.path.join(base, start, name + ".dat")):
             if line.startswith("# time"):
                 columns = line[2:].split()
             elif line.strip() and not line.startswith("#"):
-                values = [float(v) for v in line.split()]
-                # a restart repeats its first time: keep the later run's
-                while rows and rows[-1][0] >= values[0]:
-                    rows.pop()
-                rows.append(values)
+                rows.append([float(v) for v in line.split()])
+        if columns is None:
+            raise RuntimeError("monitor %s has no header in %s/%s"
+                               % (name, base, start))
+        runs.append((columns, rows))
+    return runs
+
+
+def read_monitor(case, name):
+    """Columns of monitor <name> as a dict: {'time': [...], column: [...]},
+    a run and its restarts joined"""
+    columns, rows = None, []
+    for columns, own in monitor_runs(case, name):
+        # a restart repeats its first time: keep the later run's
+        while own and rows and rows[-1][0] >= own[0][0]:
+            rows.pop()
+        rows.extend(own)
     if columns is None:
-        raise RuntimeError("monitor %s has no header in %s" % (name, base))
+        raise RuntimeError("monitor %s has no runs in %s"
+                           % (name, os.path.join(case, "postProcessing")))
     return {c: [r[k] for r in rows] for k, c in enumerate(columns)}
 
 

@@ -11,6 +11,7 @@ import os
 import re
 
 from foamCloud import read_cloud, read_positions, times
+from foamMonitor import monitor_runs
 
 
 def end_time(case):
@@ -28,14 +29,10 @@ def energy_total(case):
     run's at the restart's first time: joined unshifted (read_monitor), a
     restart would raise the total by the potential energy released before
     it, a false growth."""
-    base = os.path.join(case, "postProcessing", "energy")
     rows = []
-    for start in sorted(os.listdir(base), key=float):
-        own = []
-        for line in open(os.path.join(base, start, "energy.dat")):
-            if line.strip() and not line.startswith("#"):
-                values = [float(v) for v in line.split()]
-                own.append((values[0], values[-1]))
+    for columns, values in monitor_runs(case, "energy"):
+        k = columns.index("total")
+        own = [(v[0], v[k]) for v in values]
         if not own:
             continue
         offset = 0.0
