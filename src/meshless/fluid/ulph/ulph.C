@@ -143,7 +143,7 @@ void Foam::meshless::bodyModels::ulph::connect(particleScene& scene)
                 << wb.dict().get<word>("model") << ": expected ghostWall"
                 << exit(FatalIOError);
         }
-        attach(*wall, true);
+        attach(*wall);
     }
     cells_.reset(new cellLinkedList(dim, W.radius()*(1 + skin_)));
     lambdaFloor_ = floorRatio_*
@@ -226,11 +226,7 @@ void Foam::meshless::bodyModels::ulph::hydrostaticStart()
 }
 
 
-void Foam::meshless::bodyModels::ulph::attach
-(
-    ghostBoundary& ghosts,
-    const bool wall
-)
+void Foam::meshless::bodyModels::ulph::attach(ghostBoundary& ghosts)
 {
     const smoothingKernel& W = body_.kernel();
     particleBody& gb = ghosts.ghostBody();
@@ -243,7 +239,6 @@ void Foam::meshless::bodyModels::ulph::attach
     }
     ghosts.prepare(W);
     walls_.push_back(&ghosts);
-    isWall_.push_back(wall);
     wallBodies_.push_back(&gb);
     ghostForce_.push_back(Zero);
 
@@ -264,7 +259,7 @@ void Foam::meshless::bodyModels::ulph::attach
 
 void Foam::meshless::bodyModels::ulph::addGhosts(ghostBoundary& ghosts)
 {
-    attach(ghosts, false);
+    attach(ghosts);
 }
 
 
@@ -368,7 +363,9 @@ void Foam::meshless::bodyModels::ulph::setContext()
         ctx_.massSrc[k + 1] = walls_[k]->mass();
         Ssrc_[k + 1] = walls_[k]->S();
         Ucont_[k + 1] = walls_[k]->Ucont();
-        ctx_.wallSource[k + 1] = isWall_[k];
+        // A wall of the fluid's 'walls', not a coupled body's ghosts
+        ctx_.wallSource[k + 1] =
+            dynamic_cast<const ghostWall*>(walls_[k]) != nullptr;
     }
 }
 
