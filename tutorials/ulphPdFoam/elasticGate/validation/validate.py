@@ -15,8 +15,12 @@ Writes validation/result.md (or result-dx<spacing>.md for a spacing other
 than the tutorial's 1.25 mm) with the errors, peaks, particles, steps and
 wall time from log.ulphPdFoam, and freeEnd[-dx<spacing>].png.
 
-With --check, exits 1 when the run stopped before 0.36 s or its x RMS is
-not below the best published curve's.
+Also applies fsiChecks' stability checks (run to the end, no particle
+lost, water in the tank and not in the gate, energy not growing, the gate's
+particle-scale velocity noise below 0.1 sqrt(g H)).
+
+With --check, exits 1 when the run stopped before 0.36 s, its x RMS is
+not below the best published curve's, or a stability check is missed.
 
 Usage: validate.py <case> [--check]
 """
@@ -31,6 +35,7 @@ project = os.environ.get("MESHLESS_PROJECT",
 sys.path.insert(0, os.path.join(project, "etc", "python"))
 from foamMonitor import (case_spacing, interp, read_monitor,  # noqa: E402
                          run_cost)
+from fsiChecks import stability_checks  # noqa: E402
 
 DEFAULT_DX = 0.00125
 PUBLISHED_X = 0.0083    # best published RMS of x [m] (Khayyer 2018)
@@ -99,6 +104,12 @@ def main():
                      " points up to there only" % ts[-1])
     for line in lines:
         print(line)
+    # rho g H^2 W/2 of the water (H = 0.14, W = 0.1)
+    checks = stability_checks(case, "gate", (0, 0.5), dx,
+                              1000 * 9.81 * 0.14 ** 2 * 0.1 / 2,
+                              velocity_scale=math.sqrt(9.81 * 0.14))
+    for what, good in checks:
+        print("%s: %s" % ("met" if good else "MISSED", what))
 
     suffix = "" if abs(dx - DEFAULT_DX) < 1e-12 else "-dx%g" % dx
     with open(os.path.join(here, "result%s.md" % suffix), "w") as f:
@@ -122,6 +133,9 @@ def main():
         f.write("| wall time | %.0f s%s (2 shared cores, OMP_NUM_THREADS=1)"
                 " |\n" % (cost["wall"], "" if cost["runs"] == 1 else
                           " in %d runs (restarts)" % cost["runs"]))
+        f.write("\n| check (fsiChecks: stable) | |\n|---|---|\n")
+        for what, good in checks:
+            f.write("| %s | %s |\n" % (what, "met" if good else "MISSED"))
 
     try:
         import matplotlib
@@ -142,7 +156,8 @@ def main():
         ax.legend()
     fig.tight_layout()
     fig.savefig(os.path.join(here, "freeEnd%s.png" % suffix), dpi=100)
-    met = complete and errors["x"][0] < PUBLISHED_X
+    met = (complete and errors["x"][0] < PUBLISHED_X
+           and all(good for _, good in checks))
     return 1 if "--check" in sys.argv and not met else 0
 
 
