@@ -9,6 +9,10 @@ Water 0.1 m deep in a 0.2 m wide 2D tank (dx = 5 mm, fixed ghost walls of
   surface particles by the walls) below 3e-3 sqrt(g H);
 - no particle leaves the tank or is lost; no NaN (the solver would stop);
 - the log lists the fluid model, the walls and the named effects only.
+Then, with a fixed step 13 times the stable one, the run must stop with a
+diagnosis (a density driven to zero: the particle, its density, the last
+good state on disk) rather than a floating-point trap, and leave the
+written state as it was.
 """
 import math
 import os
@@ -17,7 +21,8 @@ import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(here), "lib"))
-from caseTest import CaseTest, copy_case, project_dir, run, scratch  # noqa
+from caseTest import (CaseTest, copy_case, project_dir, run,  # noqa
+                      scratch, set_entry, snapshot)
 sys.path.insert(0, os.path.join(project_dir, "etc", "python"))
 from foamCloud import read_cloud, times  # noqa: E402
 
@@ -66,9 +71,34 @@ def main():
         top = max(xi[1] for xi in x)
         t.check("free surface stays at H (top row %.4f m)" % top,
                 abs(top - (H - DX / 2)) < 0.2 * DX)
+
+        blow_up(t, case)
     finally:
         shutil.rmtree(work, ignore_errors=True)
     return t.finish()
+
+
+def blow_up(t, case):
+    for _, name in times(case)[1:]:
+        shutil.rmtree(os.path.join(case, name))
+    set_entry(case, "system/controlDict", "adjustTimeStep", "no")
+    set_entry(case, "system/controlDict", "deltaT", 1e-3)
+    before = snapshot(case)
+    code, out = run(["ulphPdFoam"], case)
+    t.check("unstable step: the run stops", code != 0, out[-500:])
+    for words in ("exceeds the stable step", "Blow-up at time",
+                  "body water, particle id", "would have density",
+                  "Last good state on disk: time 0"):
+        t.check("unstable step: log says '%s'" % words, words in out,
+                out[-1200:])
+    t.check("unstable step: trapping on, no floating-point trap",
+            "Floating point exception trapping enabled" in out
+            and "sigHandler" not in out, out[-1200:])
+    def state(files):
+        return {k: v for k, v in files.items()
+                if k.split(os.sep)[0] in ("0", "constant")}
+    t.check("unstable step: the written state (0/, constant/) unchanged",
+            state(snapshot(case)) == state(before))
 
 
 if __name__ == "__main__":

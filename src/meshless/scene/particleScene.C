@@ -187,6 +187,16 @@ void Foam::meshless::particleScene::checkState
         if (!b.model().moves()) continue;
         const particleSet& set = b.particles();
 
+        const string why = b.model().blowUp();
+        if (!why.empty())
+        {
+            FatalErrorInFunction
+                << "Blow-up at time " << now << ": body " << b.name()
+                << ", " << why.c_str() << nl
+                << "    Last good state on disk: time "
+                << lastWrittenTime << exit(FatalError);
+        }
+
         for (const word& name : set.fieldNames())
         {
             const particleField& f = set.field(name);

@@ -11,6 +11,7 @@
 #include "gravity.H"
 #include "viscosity.H"
 #include "dictionaryChecks.H"
+#include "StringStream.H"
 #include "addToRunTimeSelectionTable.H"
 #include <algorithm>
 #include <cmath>
@@ -75,7 +76,9 @@ Foam::meshless::bodyModels::ulph::ulph
     maxDegenerate_(0),
     floorRatio_(dict.getOrDefault<scalar>("shapeTensorFloor", 0.1)),
     lambdaFloor_(0),
-    rhoMin_(0)
+    rhoMin_(0),
+    emptied_(-1),
+    emptiedRho_(0)
 {
     if (dict.found("minPressure"))
     {
@@ -509,6 +512,61 @@ Foam::scalar Foam::meshless::bodyModels::ulph::maxDeltaT
 }
 
 
+void Foam::meshless::bodyModels::ulph::updateDensity
+(
+    const double* rho0,
+    const double* drho,
+    const scalar dt,
+    double* rho
+)
+{
+    const label n = rho_.size();
+    label bad = -1;
+    #pragma omp parallel for schedule(static) reduction(max:bad)
+    for (label i = 0; i < n; ++i)
+    {
+        const double r = std::max(rho0[i] + dt*drho[i], rhoMin_);
+        if (r > 0)
+        {
+            rho[i] = r;
+        }
+        else
+        {
+            rho[i] = rho0[i];
+            bad = std::max(bad, i);
+        }
+    }
+    if (bad >= 0 && emptied_ < 0)
+    {
+        emptied_ = bad;
+        emptiedRho_ = rho0[bad] + dt*drho[bad];
+    }
+}
+
+
+Foam::string Foam::meshless::bodyModels::ulph::blowUp() const
+{
+    if (emptied_ < 0) return string::null;
+
+    const particleSet& set = body_.particles();
+    const particleField& x = set.positions();
+    OStringStream os;
+    os  << "particle id " << set.ids()[emptied_] << " at (";
+    for (label d = 0; d < body_.dim(); ++d)
+    {
+        os  << (d ? " " : "") << x(emptied_, d);
+    }
+    os  << ") would have density " << emptiedRho_ << " kg/m^3 (continuity,"
+        << " eq. 16): its neighbours move apart faster than the step"
+        << " follows, as when a particle is thrown out with too few"
+        << " neighbours." << nl
+        << "    Likely causes: a time step above the stable one (lower"
+        << " deltaT or maxCo), too little artificial viscosity; a"
+        << " 'minPressure' bounds the density from below.";
+    return os.str();
+}
+
+
 void Foam::meshless::bodyModels::ulph::advance
 (
     const scalar t,
@@ -516,6 +574,8 @@ void Foam::meshless::bodyModels::ulph::advance
     costAccounting& costs
 )
 {
+    emptied_ = -1;
+
     for (ghostBoundary* wall : walls_) wall->moveTo(t);
     {
         costAccounting::scope timer(costs, neighbourCost_);
@@ -540,11 +600,7 @@ void Foam::meshless::bodyModels::ulph::advance
 
     // Predictor (eq. 56, left)
     evaluateDim(t, costs);
-    #pragma omp parallel for schedule(static)
-    for (label i = 0; i < n; ++i)
-    {
-        rho[i] = std::max(rho0[i] + 0.5*dt*drho[i], rhoMin_);
-    }
+    updateDensity(rho0, drho, 0.5*dt, rho);
     #pragma omp parallel for schedule(static)
     for (label k = 0; k < nv; ++k)
     {
@@ -554,11 +610,7 @@ void Foam::meshless::bodyModels::ulph::advance
 
     // Corrector (eq. 56, right)
     evaluateDim(t + 0.5*dt, costs);
-    #pragma omp parallel for schedule(static)
-    for (label i = 0; i < n; ++i)
-    {
-        rho[i] = std::max(rho0[i] + dt*drho[i], rhoMin_);
-    }
+    updateDensity(rho0, drho, dt, rho);
     #pragma omp parallel for schedule(static)
     for (label k = 0; k < nv; ++k)
     {
