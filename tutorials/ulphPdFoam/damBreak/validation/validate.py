@@ -4,8 +4,9 @@ and Moyce (1952) (validation/martinMoyce1952.dat).
 
 The front is the largest x of the water particles at each written time; the
 simulated curve is interpolated linearly at the reference times and the RMS
-of the differences, in units of H, is the error (target: below 0.05 H up to
-the last reference point, x = 3H, before the front reaches the far wall).
+of the differences, in units of H, is the error (target: below 0.05 H
+until the front reaches the far wall: up to the last reference point before
+it, x = 3.89H).
 Also checks that no particle has left the tank: the deepest penetration
 beyond the walls (x < 0, x > 4H, y < 0) must stay below half a spacing.
 
