@@ -26,11 +26,8 @@ TUTORIAL = os.path.join(project_dir, "tutorials/ulphPdFoam/cantileverBeam")
 
 
 def fresh_copy(work, name):
-    case = copy_case(TUTORIAL, os.path.join(work, name))
-    shutil.rmtree(os.path.join(case, "validation"))
-    shutil.copytree(os.path.join(TUTORIAL, "validation"),
-                    os.path.join(case, "validation"),
-                    ignore=shutil.ignore_patterns("*.md", "*.png"))
+    case = copy_case(TUTORIAL, os.path.join(work, name),
+                     stored_results=False)
     return case
 
 

@@ -29,11 +29,8 @@ TUTORIAL = os.path.join(project_dir, "tutorials/isphTlsphFoam/oscillatingPlate")
 
 
 def fresh_copy(work, name):
-    case = copy_case(TUTORIAL, os.path.join(work, name))
-    shutil.rmtree(os.path.join(case, "validation"))
-    shutil.copytree(os.path.join(TUTORIAL, "validation"),
-                    os.path.join(case, "validation"),
-                    ignore=shutil.ignore_patterns("*.md", "*.png", "runs"))
+    case = copy_case(TUTORIAL, os.path.join(work, name),
+                     stored_results=False)
     return case
 
 

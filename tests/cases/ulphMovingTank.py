@@ -18,7 +18,6 @@ water stays on the tank's side of its bottom.
 """
 import math
 import os
-import re
 import shutil
 import sys
 

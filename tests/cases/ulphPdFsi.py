@@ -61,11 +61,8 @@ FIRST_PEAK = ((0.030, 0.060), (0.19, 0.28))
 
 def prepare(t, name, work, dx, end):
     src = os.path.join(project_dir, "tutorials", "ulphPdFoam", name)
-    case = copy_case(src, os.path.join(work, name))
-    shutil.rmtree(os.path.join(case, "validation"))
-    shutil.copytree(os.path.join(src, "validation"),
-                    os.path.join(case, "validation"),
-                    ignore=shutil.ignore_patterns("*.md", "*.png"))
+    case = copy_case(src, os.path.join(work, name),
+                     stored_results=False)
     set_entry(case, "system/controlDict", "endTime", end)
     code, out = run(["./Allrun", "-dx", str(dx)], case)
     t.check("%s: Allrun -dx %g to %g s succeeds" % (name, dx, end),

@@ -42,12 +42,21 @@ class CaseTest:
         return 0 if self.failed == 0 else 1
 
 
-def copy_case(src, dst):
+def copy_case(src, dst, stored_results=True):
     """A clean copy of a tutorial: no mesh, no results, no logs, none of
-    the files an Allrun writes into system/ for its options."""
+    the files an Allrun writes into system/ for its options. Without
+    stored_results, validation/ is copied without the tutorial's stored
+    results (tables, plots, runs/), so that what the test's run writes
+    there is all there is."""
     shutil.copytree(src, dst, ignore=shutil.ignore_patterns(
         "[0-9]*", "log.*", "*.foam", "polyMesh", "VTK", "postProcessing",
         "resolution", "runParameters"))
+    if not stored_results:
+        shutil.rmtree(os.path.join(dst, "validation"))
+        shutil.copytree(os.path.join(src, "validation"),
+                        os.path.join(dst, "validation"),
+                        ignore=shutil.ignore_patterns("*.md", "*.png",
+                                                      "runs"))
     return dst
 
 

@@ -3,17 +3,11 @@
 against the linear modal solution, over the first two periods.
 
 The reference is linear potential theory for a rectangular tank of length
-L and depth h whose walls move as X(t) (in the tank's frame, modes
-cos(k_n x), k_n = n pi/L, w_n^2 = g k_n tanh(k_n h), x from the left wall):
-    eta(x, t) = sum_{n odd} beta_n(t) cos(k_n x),
-    beta_n'' + w_n^2 beta_n = (4 tanh(k_n h)/(L k_n)) X''(t),
-from projecting the free-surface conditions on the modes. For the paper's
-motion (eq. 60) X = A0 (cos w t - 1), from rest,
-    beta_n = F_n/(w_n^2 - w^2) (cos w t - cos w_n t),
-    F_n = -(4 tanh(k_n h)/(L k_n)) A0 w^2,
-summed here over n < 200. Linear theory holds while the waves are small:
-the comparison covers two forcing periods (the response beats, since
-T/T1 = 1.069, and leaves the linear range later).
+L and depth h whose walls move as the paper's eq. 60, X = A0 (cos w t - 1)
+from rest: the modal solution in etc/python/swayTank.py. Linear theory
+holds while the waves are small: the comparison covers two forcing
+periods (the response beats, since T/T1 = 1.069, and leaves the linear
+range later).
 
 The simulated elevation is the highest water particle within 1.5 spacings
 of the probe (which moves with the tank) plus half a spacing, less h. The
@@ -30,46 +24,22 @@ Usage: validate.py <case> [--check]
 """
 import math
 import os
-import re
 import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
-from foamCloud import read_positions, times  # noqa: E402
-from foamMonitor import run_cost  # noqa: E402
+from swayTank import SwayTank, ulph_cost  # noqa: E402
 
-L, H, A0, T, G = 1.73, 0.5, 0.032, 1.875, 9.81
+T = 1.875
 XPROBE = 0.05
-W = 2 * math.pi / T
 PHASE_TARGET = 0.03
+TANK = SwayTank(length=1.73, depth=0.5, amplitude=0.032, period=T)
 
 
-def tank_x(t):
-    return A0 * (math.cos(W * t) - 1)
-
-
-def linear_eta(t, x=XPROBE):
-    s = 0.0
-    for n in range(1, 200, 2):
-        k = n * math.pi / L
-        wn = math.sqrt(G * k * math.tanh(k * H))
-        F = -(4 * math.tanh(k * H) / (L * k)) * A0 * W * W
-        s += F / (wn * wn - W * W) * (math.cos(W * t) - math.cos(wn * t)) \
-            * math.cos(k * x)
-    return s
-
-
-def simulated(case, dx):
-    out = []
-    for t, name in times(case):
-        x = read_positions(case, name, "water")
-        xp = XPROBE + tank_x(t)
-        near = [p[1] for p in x if abs(p[0] - xp) < 1.5 * dx]
-        if near:
-            out.append((t, max(near) + 0.5 * dx - H))
-    return out
+def linear_eta(t):
+    return TANK.linear_eta(t, XPROBE)
 
 
 def extrema(series):
@@ -84,22 +54,6 @@ def extrema(series):
             shift = 0.5 * (y0 - y2) / denom * dt if denom else 0.0
             ext.append((t1 + shift, "max" if y1 > y0 else "min"))
     return ext
-
-
-def case_cost(case):
-    """foamMonitor's run_cost of log.ulphPdFoam, with the water and wall
-    particles and the spacing of its scene"""
-    log_file = os.path.join(case, "log.ulphPdFoam")
-    cost = run_cost(log_file)
-    log = open(log_file).read()
-    spacing = re.search(r"water: (\d+) particles, spacing ([0-9.e-]+)", log)
-    nwall = re.search(r"tank: (\d+) particles", log)
-    cost.update({
-        "water": int(spacing.group(1)) if spacing else 0,
-        "dx": float(spacing.group(2)) if spacing else float("nan"),
-        "walls": int(nwall.group(1)) if nwall else 0,
-    })
-    return cost
 
 
 def plot(sim, path):
@@ -126,9 +80,9 @@ def plot(sim, path):
 
 
 def main(case, check):
-    cost = case_cost(case)
+    cost = ulph_cost(case)
     dx = cost["dx"]
-    sim = simulated(case, dx)
+    sim = TANK.probe_elevation(case, dx, XPROBE)
     window = [s for s in sim if s[0] <= 2 * T]
     lin = [(t, linear_eta(t)) for t, _ in window]
     ext_sim = extrema(window)

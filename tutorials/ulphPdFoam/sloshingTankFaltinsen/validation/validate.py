@@ -4,7 +4,8 @@
 (validation/faltinsen2000.dat: tank 1.73 m, water 0.6 m deep, sway
 A0 = 0.032 m, T = 1.3 s, about 10 s).
 
-The simulated elevation is taken as in the sloshingTank tutorial: the
+The simulated elevation is swayTank's probe_elevation, as in the
+sloshingTank tutorial: the
 highest water particle within 1.5 spacings of the probe (which moves with
 the tank) plus half a spacing, less the depth.
 
@@ -31,7 +32,7 @@ The measures, over the experimental series up to the end of the run:
   simulation's output times in the experimental range), relative to the
   experiment's largest |eta|.
 
-The linear modal solution (as in the sloshingTank tutorial's validate.py,
+The linear modal solution (etc/python/swayTank.py,
 with h = 0.6 m, T = 1.3 s) is drawn on the plot for orientation only:
 T/T1 = 0.78, so it beats with the first mode (T1 = 1.668 s).
 
@@ -50,29 +51,17 @@ here = os.path.dirname(os.path.abspath(__file__))
 project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
-from foamCloud import read_positions, times  # noqa: E402
-from foamMonitor import run_cost  # noqa: E402
+from swayTank import SwayTank, ulph_cost  # noqa: E402
 
-L, H, A0, T, G = 1.73, 0.6, 0.032, 1.3, 9.81
+T = 1.3
 XPROBE = 0.05
-W = 2 * math.pi / T
+TANK = SwayTank(length=1.73, depth=0.6, amplitude=0.032, period=T)
 AMPLITUDE_TARGET = 0.15
 MIN_HEIGHT = 0.02
 
 
-def tank_x(t):
-    return A0 * (math.cos(W * t) - 1)
-
-
-def linear_eta(t, x=XPROBE):
-    s = 0.0
-    for n in range(1, 200, 2):
-        k = n * math.pi / L
-        wn = math.sqrt(G * k * math.tanh(k * H))
-        F = -(4 * math.tanh(k * H) / (L * k)) * A0 * W * W
-        s += F / (wn * wn - W * W) * (math.cos(W * t) - math.cos(wn * t)) \
-            * math.cos(k * x)
-    return s
+def linear_eta(t):
+    return TANK.linear_eta(t, XPROBE)
 
 
 def experiment():
@@ -81,17 +70,6 @@ def experiment():
         line = line.split("#")[0].split()
         if line:
             out.append((float(line[0]), float(line[1])))
-    return out
-
-
-def simulated(case, dx):
-    out = []
-    for t, name in times(case):
-        x = read_positions(case, name, "water")
-        xp = XPROBE + tank_x(t)
-        near = [p[1] for p in x if abs(p[0] - xp) < 1.5 * dx]
-        if near:
-            out.append((t, max(near) + 0.5 * dx - H))
     return out
 
 
@@ -159,19 +137,9 @@ def interp(series, t):
 
 
 def case_cost(case):
-    """foamMonitor's run_cost of log.ulphPdFoam (a run and its restarts add
-    up), with the water and wall particles and the spacing of its scene"""
-    log_file = os.path.join(case, "log.ulphPdFoam")
-    cost = run_cost(log_file)
-    log = open(log_file).read()
-    spacing = re.search(r"water: (\d+) particles, spacing ([0-9.e-]+)", log)
-    nwall = re.search(r"tank: (\d+) particles", log)
-    cost.update({
-        "water": int(spacing.group(1)) if spacing else 0,
-        "dx": float(spacing.group(2)) if spacing else float("nan"),
-        "walls": int(nwall.group(1)) if nwall else 0,
-        "endTime": cost_end(case),
-    })
+    """swayTank's ulph_cost with the run's endTime"""
+    cost = ulph_cost(case)
+    cost["endTime"] = cost_end(case)
     return cost
 
 
@@ -213,7 +181,7 @@ def plot(sim, exp, rows, path):
 def main(case, check):
     cost = case_cost(case)
     dx = cost["dx"]
-    sim = simulated(case, dx)
+    sim = TANK.probe_elevation(case, dx, XPROBE)
     exp = experiment()
     tend = sim[-1][0]
     rows = []
