@@ -51,7 +51,7 @@ def copy_case(src, dst, stored_results=True):
     shutil.copytree(src, dst, ignore=shutil.ignore_patterns(
         "[0-9]*", "log.*", "*.foam", "polyMesh", "VTK", "postProcessing",
         "resolution", "runParameters"))
-    if not stored_results:
+    if not stored_results and os.path.isdir(os.path.join(src, "validation")):
         shutil.rmtree(os.path.join(dst, "validation"))
         shutil.copytree(os.path.join(src, "validation"),
                         os.path.join(dst, "validation"),

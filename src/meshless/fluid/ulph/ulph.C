@@ -520,13 +520,17 @@ void Foam::meshless::bodyModels::ulph::updateDensity
     double* rho
 )
 {
+    // A million-fold expansion is as much a blow-up as a zero density
+    // (V = m/rho would overflow); a NaN passes to the scene's check of
+    // non-finite fields
     const label n = rho_.size();
+    const double floor = 1e-6*rho0_;
     label bad = -1;
     #pragma omp parallel for schedule(static) reduction(max:bad)
     for (label i = 0; i < n; ++i)
     {
         const double r = std::max(rho0[i] + dt*drho[i], rhoMin_);
-        if (r > 0)
+        if (!(r <= floor))
         {
             rho[i] = r;
         }

@@ -235,10 +235,10 @@ def errors(run):
 
 
 def extrapolated(runs, scheme=TUTORIAL_SCHEME, hourglass=10):
-    """Richardson extrapolation of the period and the amplitude from the
-    runs of a scheme at T/dx = 10, 20, 40: (observed order of the period,
-    period, amplitude), None unless all three are present and the period
-    converges monotonically"""
+    """Richardson extrapolation of the period and the amplitude (at the
+    period's order) from the runs of a scheme at T/dx = 10, 20, 40:
+    (observed order of the period, period, amplitude), None unless all
+    three are present and the period converges monotonically"""
     by = {r["TdX"]: r for r in runs
           if r["scheme"] == scheme and r["hourglass"] == hourglass}
     if not all(n in by for n in (10, 20, 40)):
@@ -293,7 +293,7 @@ def write_table(runs, timoshenko):
         order, p, a = rich
         lines.append(
             "| isphTlsphFoam, extrapolated from T/dx = 10, 20, 40 "
-            "(Richardson, observed order %.2f) | %s | 10 | - | %.2f "
+            "(Richardson, the period's observed order %.2f) | %s | 10 | - | %.2f "
             "| %+.2f %% | %+.2f %% | %.4f | %+.2f %% | | | | | |"
             % (order, TUTORIAL_SCHEME, p, 100 * (p / th["periodTheory"] - 1),
                100 * (p / timoshenko - 1), a,
@@ -316,7 +316,7 @@ def write_table(runs, timoshenko):
         " first period the Timoshenko beam gives %.2f %% longer (column 'vs"
         " Timoshenko'; computed in validate.py). Neither is exact for the"
         " 2D plate clamped on a face; the extrapolated row, when T/dx = 10,"
-        " 20 and 40 are present, is what the runs converge to (README,"
+        " 20 and 40 are present, estimates what the runs converge to (README,"
         " 'Known limits')."
         % (100 * (timoshenko / th["periodTheory"] - 1)),
         "",
