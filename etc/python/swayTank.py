@@ -1,8 +1,8 @@
 """A rectangular tank swayed as X(t) = A0 (cos(2 pi t/T) - 1) from rest (the
 ULPH-NOSBPD paper's eq. 60), shared by the validation scripts of the
 sloshing tutorials: the tank's motion, the linear modal solution of the
-free-surface elevation, the elevation a run gives at a probe that moves
-with the tank, and the run's cost.
+free-surface elevation, and the elevation a run gives at a probe that
+moves with the tank.
 
     from swayTank import SwayTank
     tank = SwayTank(length=1.73, depth=0.5, amplitude=0.032, period=1.875)
@@ -20,11 +20,8 @@ which from rest is
 summed here over n < 200.
 """
 import math
-import os
-import re
 
 from foamCloud import read_positions, times
-from foamMonitor import run_cost
 
 
 class SwayTank:
@@ -62,19 +59,3 @@ class SwayTank:
                 out.append((t, max(near) + 0.5 * dx - self.h))
         return out
 
-
-def ulph_cost(case, walls="tank", fluid="water"):
-    """foamMonitor's run_cost of log.ulphPdFoam (a run and its restarts add
-    up), with the fluid's particles and spacing and the walls' particles"""
-    log_file = os.path.join(case, "log.ulphPdFoam")
-    cost = run_cost(log_file)
-    log = open(log_file).read()
-    spacing = re.search(r"%s: (\d+) particles, spacing ([0-9.e-]+)" % fluid,
-                        log)
-    nwall = re.search(r"%s: (\d+) particles" % walls, log)
-    cost.update({
-        "water": int(spacing.group(1)) if spacing else 0,
-        "dx": float(spacing.group(2)) if spacing else float("nan"),
-        "walls": int(nwall.group(1)) if nwall else 0,
-    })
-    return cost

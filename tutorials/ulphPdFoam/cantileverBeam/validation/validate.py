@@ -33,7 +33,7 @@ project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
 from foamCloud import read_positions, times  # noqa: E402
-from foamMonitor import run_cost  # noqa: E402
+from foamMonitor import body_cost  # noqa: E402
 
 L, H, E, NU = 1.0, 0.2, 22e9, 0.3
 TARGET = 2.0     # %
@@ -50,16 +50,6 @@ def beam(F, X, shear):
     G = E / (2 * (1 + NU))
     I = H ** 3 / 12
     return F * (X * X * (3 * L - X) / (6 * E * I) + shear * X / (G * H))
-
-
-def case_cost(case):
-    """foamMonitor's run_cost of log.ulphPdFoam, with the beam's spacing"""
-    log_file = os.path.join(case, "log.ulphPdFoam")
-    cost = run_cost(log_file)
-    spacing = re.search(r"beam: \d+ particles, spacing ([0-9.e-]+)",
-                        open(log_file).read())
-    cost["dx"] = float(spacing.group(1)) if spacing else float("nan")
-    return cost
 
 
 def plot(hist, ref, axis, path):
@@ -121,7 +111,7 @@ def main(case, check):
     err = 100 * (v / ref - 1)
     errTimo = 100 * (v / refTimo - 1)
     drift = 100 * abs(hist[-1][1] / hist[-2][1] - 1)
-    cost = case_cost(case)
+    cost = body_cost(case, "beam")
     static = drift < STATIC
     ok = abs(err) < TARGET and static
     paper = abs(cost["dx"] - 0.01) < 1e-9

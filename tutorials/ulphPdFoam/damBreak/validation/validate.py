@@ -27,7 +27,7 @@ project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
 from foamCloud import read_positions, times  # noqa: E402
-from foamMonitor import run_cost  # noqa: E402
+from foamMonitor import body_cost  # noqa: E402
 
 H = 0.057
 G = 9.81
@@ -66,21 +66,13 @@ def interpolate(T, X, t):
 
 
 def case_cost(case):
-    """foamMonitor's run_cost of log.ulphPdFoam, with the wall particles and
-    the spacing of its scene and the artificial viscosity's alpha"""
+    """foamMonitor's body_cost of the water (with the walls) and the
+    artificial viscosity's alpha"""
     props = open(os.path.join(case, "constant", "particleProperties")).read()
     alpha = re.search(r"artificialViscosity\s*\{\s*alpha\s+([0-9.eE+-]+)",
                       props)
-    log_file = os.path.join(case, "log.ulphPdFoam")
-    cost = run_cost(log_file)
-    log = open(log_file).read()
-    nwall = re.search(r"walls: (\d+) particles", log)
-    spacing = re.search(r"water: \d+ particles, spacing ([0-9.e-]+)", log)
-    cost.update({
-        "walls": int(nwall.group(1)) if nwall else 0,
-        "dx": float(spacing.group(1)) if spacing else float("nan"),
-        "alpha": alpha.group(1) if alpha else "none",
-    })
+    cost = body_cost(case, "water", walls="walls")
+    cost["alpha"] = alpha.group(1) if alpha else "none"
     return cost
 
 

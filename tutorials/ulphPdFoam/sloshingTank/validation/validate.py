@@ -30,7 +30,8 @@ here = os.path.dirname(os.path.abspath(__file__))
 project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
-from swayTank import SwayTank, ulph_cost  # noqa: E402
+from foamMonitor import body_cost  # noqa: E402
+from swayTank import SwayTank  # noqa: E402
 
 T = 1.875
 XPROBE = 0.05
@@ -80,7 +81,7 @@ def plot(sim, path):
 
 
 def main(case, check):
-    cost = ulph_cost(case)
+    cost = body_cost(case, "water", walls="tank")
     dx = cost["dx"]
     sim = TANK.probe_elevation(case, dx, XPROBE)
     window = [s for s in sim if s[0] <= 2 * T]

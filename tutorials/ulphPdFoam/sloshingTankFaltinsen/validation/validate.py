@@ -51,7 +51,8 @@ here = os.path.dirname(os.path.abspath(__file__))
 project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
-from swayTank import SwayTank, ulph_cost  # noqa: E402
+from foamMonitor import body_cost  # noqa: E402
+from swayTank import SwayTank  # noqa: E402
 
 T = 1.3
 XPROBE = 0.05
@@ -137,8 +138,8 @@ def interp(series, t):
 
 
 def case_cost(case):
-    """swayTank's ulph_cost with the run's endTime"""
-    cost = ulph_cost(case)
+    """foamMonitor's body_cost with the run's endTime"""
+    cost = body_cost(case, "water", walls="tank")
     cost["endTime"] = cost_end(case)
     return cost
 
