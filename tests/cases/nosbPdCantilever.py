@@ -82,6 +82,9 @@ def main():
             ("order                   2;", "order 2; failure {"
              " criticalStretch 0.01; energyReleaseRate 10; }",
              "exactly one of 'criticalStretch'"),
+            ("region  { type cellZone; zone clamp; }",
+             "region  { type cellZone; zone clamp; } face { point (0 0 0);"
+             " normal (1 0 0); }", "is for model tlsph"),
         ]:
             bad = fresh_copy(work, "bad")
             shutil.copytree(os.path.join(half, "constant", "polyMesh"),

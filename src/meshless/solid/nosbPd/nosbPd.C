@@ -300,6 +300,19 @@ void Foam::meshless::bodyModels::nosbPd::connect(particleScene& scene)
             dict_, set, X0_, scene.mesh(), &body_.kernel()
         )
     );
+    // The mirrored clamp is made variational by tlsph's force; here it
+    // would be a ghost condition that does not conserve energy
+    for (label i = 0; i < set.size(); ++i)
+    {
+        if (constraints_->mirrored(i))
+        {
+            FatalIOErrorInFunction(dict_.subDict("constraints"))
+                << "Body " << body_.name() << ": a clamped constraint with"
+                << " a 'face' (mirrored clamp) is for model tlsph; remove"
+                << " the face to hold the clamped particles where they are"
+                << exit(FatalIOError);
+        }
+    }
 
     const label nRead =
         families_->readBroken(set, runTime, runTime.timeName());

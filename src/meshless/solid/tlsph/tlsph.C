@@ -131,6 +131,8 @@ void Foam::meshless::bodyModels::tlsph::evaluate
             tlsphOperators::stressDim<Dim>(Pa.cdata(), P + a*Dim*Dim);
         }
 
+        tlsphOperators::clearImageStress<Dim>(mirrors_, P);
+
         tlsphOperators::internalForce<Dim>
         (
             pairs_, corrGradW_.data(), reverse_.data(), V, P, acc
@@ -141,9 +143,12 @@ void Foam::meshless::bodyModels::tlsph::evaluate
             (
                 pairs_, Wab_.data(), V, X, x, F,
                 0.5*hourglass_*law.elastic().E(), acc,
-                law.geometricallyLinear()
+                law.geometricallyLinear(),
+                image_.empty() ? nullptr : image_.data()
             );
         }
+
+        tlsphOperators::foldImageForces<Dim>(mirrors_, acc);
 
         const double* m = mass_.data();
         #pragma omp parallel for schedule(static)
@@ -431,6 +436,18 @@ void Foam::meshless::bodyModels::tlsph::connect(particleScene& scene)
     );
     stressCost_ = scene.costs().part(body_.name() + ": tlsph stress");
 
+    const label n = body_.particles().size();
+    image_.clear();
+    mirrors_.clear();
+    for (label i = 0; i < n; ++i)
+    {
+        const label m = constraints_->partner(i);
+        if (m < 0) continue;
+        if (image_.empty()) image_.assign(n, 0);
+        image_[i] = 1;
+        mirrors_.emplace_back(i, m);
+    }
+
     Info<< "    " << body_.name() << ": tlsph, "
         << integratorNames[integrator_] << ", wave speed " << c_ << " m/s, "
         << pairs_.nPairs() << " reference pairs, gradientOrder " << order_
@@ -513,17 +530,18 @@ Foam::scalar Foam::meshless::bodyModels::tlsph::strainEnergy() const
     {
         const double c = 0.5*hourglass_*law_->elastic().E();
         const double* x = body_.particles().positions().data();
+        const char* img = image_.empty() ? nullptr : image_.data();
         W +=
             dim == 2
           ? tlsphOperators::hourglassEnergy<2>
             (
                 pairs_, Wab_.data(), V0_.data(), X0_.data(), x, F_.data(), c,
-                law_->geometricallyLinear()
+                law_->geometricallyLinear(), img
             )
           : tlsphOperators::hourglassEnergy<3>
             (
                 pairs_, Wab_.data(), V0_.data(), X0_.data(), x, F_.data(), c,
-                law_->geometricallyLinear()
+                law_->geometricallyLinear(), img
             );
     }
     return W;
