@@ -71,6 +71,7 @@ Foam::scalar Foam::meshless::monitors::energy::potential
     scalar E = 0;
     for (label i = 0; i < set.size(); ++i)
     {
+        if (b.model().isImage(i)) continue;
         for (label c = 0; c < set.dim(); ++c)
         {
             E -= m(i, 0)*g->value()[c]*x(i, c);
