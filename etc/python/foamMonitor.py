@@ -116,11 +116,14 @@ def interp(t, ts, vs):
 
 def dictionary_entry(case, key, dictionary="constant/particleProperties"):
     """An entry of a case dictionary ('/'-scoped key, e.g. bodies/beam/density)
-    with its $variables and #eval expanded, read through foamDictionary"""
+    with its $variables and #eval expanded, read through foamDictionary.
+    Run from the case: foamDictionary takes $FOAM_CASE (the tutorials'
+    #includeIfPresent "$FOAM_CASE/system/runParameters") from its working
+    directory, so from elsewhere it would read the defaults"""
     import subprocess
     out = subprocess.run(
-        ["foamDictionary", "-entry", key, "-value",
-         os.path.join(case, dictionary)],
+        ["foamDictionary", "-entry", key, "-value", dictionary],
+        cwd=case, env=dict(os.environ, PWD=os.path.abspath(case)),
         check=True, capture_output=True, text=True).stdout
     return out.strip()
 

@@ -167,8 +167,8 @@ def write_table(runs, E, nu):
         "",
         "Target: small kinematics, 11 particles through the thickness: "
         "error < 0.5 % (the paper: 1.04 %, finite kinematics against the "
-        "small-strain formula). The tutorial's scheme converges as -0.18 % "
-        "+ 1.01/n^2, the 1/n^2 being the midpoint rule's second moment of "
+        "small-strain formula). The tutorial's scheme converges as -0.17 % "
+        "+ 1.03/n^2, the 1/n^2 being the midpoint rule's second moment of "
         "area (0.83 % at n = 11), so the target is met from n = 13 and "
         "missed at n = 11: README, 'Sources of error'.",
         "",
