@@ -68,7 +68,8 @@ void Foam::meshless::bodyModels::tlsph::buildReference()
     const label singular = tlsphOperators::reference<Dim>
     (
         pairs_, body_.kernel(), X, V0_.data(),
-        vgradW_, corrGradW_, Wab_, KinvT_, order_
+        vgradW_, corrGradW_, Wab_, KinvT_, order_,
+        taylor_ ? &hessW_ : nullptr
     );
     reverse_ = tlsphOperators::reversePairs(pairs_);
 
@@ -96,6 +97,57 @@ void Foam::meshless::bodyModels::tlsph::computeF(particleField& F) const
         body_.particles().positions().data(),
         F.data()
     );
+}
+
+
+template<int Dim>
+Foam::scalar Foam::meshless::bodyModels::tlsph::strainGradientStress() const
+{
+    const label n = body_.particles().size();
+    constexpr int D3 = Dim*Dim*Dim;
+    tlsphOperators::strainGradient<Dim>
+    (
+        pairs_, hessW_.data(), X0_.data(),
+        body_.particles().positions().data(), gradEps_.data()
+    );
+
+    // The cell's second moment per unit volume, dx^2/12 along each axis
+    const scalar M = sqr(body_.spacing())/12;
+    const constitutiveLaw& law = law_();
+    const double* G = gradEps_.data();
+    double* T = gradStress_.data();
+    scalar E = 0;
+    #pragma omp parallel for schedule(static) reduction(+:E)
+    for (label a = 0; a < n; ++a)
+    {
+        if (!image_.empty() && image_[a])
+        {
+            std::fill_n(T + a*D3, D3, 0.0);
+            continue;
+        }
+        const double c = V0_(a, 0)*M;
+        for (int k = 0; k < Dim; ++k)
+        {
+            // The law is linear: C : e is its stress at F = I + e
+            tensor Fe(tensor::I);
+            const double* e = G + a*D3 + k*Dim*Dim;
+            for (int i = 0; i < Dim; ++i)
+            {
+                for (int j = 0; j < Dim; ++j) Fe[3*i + j] += e[i*Dim + j];
+            }
+            const tensor s = law.stress(a, tensor::I, Fe);
+            double* t = T + a*D3 + k*Dim*Dim;
+            for (int i = 0; i < Dim; ++i)
+            {
+                for (int j = 0; j < Dim; ++j)
+                {
+                    t[i*Dim + j] = c*s[3*i + j];
+                    E += 0.5*t[i*Dim + j]*e[i*Dim + j];
+                }
+            }
+        }
+    }
+    return E;
 }
 
 
@@ -137,6 +189,15 @@ void Foam::meshless::bodyModels::tlsph::evaluate
         (
             pairs_, corrGradW_.data(), reverse_.data(), V, P, acc
         );
+        if (taylor_)
+        {
+            strainGradientStress<Dim>();
+            tlsphOperators::strainGradientForce<Dim>
+            (
+                pairs_, hessW_.data(), reverse_.data(), gradStress_.data(),
+                acc
+            );
+        }
         if (hourglass_ > 0)
         {
             tlsphOperators::hourglassForce<Dim>
@@ -376,6 +437,7 @@ Foam::meshless::bodyModels::tlsph::tlsph
     integrator_(integratorNames.get("integrator", dict)),
     hourglass_(dict.getOrDefault<scalar>("hourglassControl", 0)),
     order_(dict.getOrDefault<label>("gradientOrder", 1)),
+    taylor_(false),
     minSubSteps_
     (
         dict.found("subSteps") ? readPositiveLabel(dict, "subSteps") : 1
@@ -403,8 +465,40 @@ Foam::meshless::bodyModels::tlsph::tlsph
             << exit(FatalIOError);
     }
 
+    const word integration =
+        dict.getOrDefault<word>("nodalIntegration", "midpoint");
+    if (integration == "taylor")
+    {
+        taylor_ = true;
+        if
+        (
+            order_ != 2
+         || !law_->geometricallyLinear()
+         || law_->incremental()
+        )
+        {
+            FatalIOErrorInFunction(dict)
+                << "nodalIntegration taylor: needs gradientOrder 2 (the"
+                << " strain gradient comes from its fit) and a linear law"
+                << " with small kinematics (linearElastic, kinematics small)"
+                << exit(FatalIOError);
+        }
+    }
+    else if (integration != "midpoint")
+    {
+        FatalIOErrorInFunction(dict)
+            << "nodalIntegration " << integration << ": expected midpoint"
+            << " (the default) or taylor" << exit(FatalIOError);
+    }
+
     particleSet& set = body.particles();
     const label nv = set.size()*body.dim();
+    if (taylor_)
+    {
+        const label d3 = body.dim()*body.dim()*body.dim();
+        gradEps_.assign(set.size()*d3, 0);
+        gradStress_.assign(set.size()*d3, 0);
+    }
 
     // A fresh start: the seeded state is the reference configuration
     if (!restart_)
@@ -544,6 +638,12 @@ Foam::scalar Foam::meshless::bodyModels::tlsph::strainEnergy() const
         if (isImage(a)) continue;
         W += V0_(a, 0)
             *law_->energyDensity(a, particleTensor(F_.data(), a, dim));
+    }
+
+    // The strain gradient's energy over the cells (Taylor integration)
+    if (taylor_)
+    {
+        W += dim == 2 ? strainGradientStress<2>() : strainGradientStress<3>();
     }
 
     // The hourglass control's springs store energy too
