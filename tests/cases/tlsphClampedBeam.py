@@ -5,8 +5,7 @@ coarse spacing, 7 particles through the thickness.
 Runs tutorials/isphTlsphFoam/clampedBeam with -n 7 on scratch copies and
 checks the tip deflection against Timoshenko's 33.59 mm (eq. 50):
 - the tutorial's scheme (Taylor nodal integration, no hourglass control)
-  within 0.5 % already at
-  n = 7, the issue's target at n = 11;
+  within 0.5 % already at n = 7 (the issue's target is at n = 11);
 - the midpoint rule (-midpoint) too flexible by about the second moment it
   lacks, 1/n^2 = 2.0 % at n = 7 (between 1.5 and 2.5 %), so the Taylor
   term is what closes the gap;
