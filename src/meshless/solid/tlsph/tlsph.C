@@ -73,6 +73,32 @@ void Foam::meshless::bodyModels::tlsph::buildReference()
     );
     reverse_ = tlsphOperators::reversePairs(pairs_);
 
+    // Particles whose order 2 fit fell back to order 1 have no strain
+    // gradient: no Taylor term, so nothing resists their zero-energy modes
+    if (taylor_)
+    {
+        label flat = 0;
+        for (label a = 0; a < n; ++a)
+        {
+            bool any = false;
+            for (label p = pairs_.offset(a); p < pairs_.offset(a + 1); ++p)
+            {
+                for (int k = 0; k < Dim*Dim; ++k)
+                {
+                    any = any || hessW_[p*Dim*Dim + k] != 0;
+                }
+            }
+            if (!any) ++flat;
+        }
+        if (flat)
+        {
+            WarningInFunction
+                << "Body " << body_.name() << ": " << flat << " particles"
+                << " without a strain gradient (too few neighbours for the"
+                << " order 2 fit): no Taylor term there" << endl;
+        }
+    }
+
     if (singular >= 0)
     {
         FatalIOErrorInFunction(dict_)
@@ -112,7 +138,7 @@ Foam::scalar Foam::meshless::bodyModels::tlsph::strainGradientStress() const
     );
 
     // The cell's second moment per unit volume, dx^2/12 along each axis
-    const scalar M = sqr(body_.spacing())/12;
+    // (dx from the particle's volume)
     const constitutiveLaw& law = law_();
     const double* G = gradEps_.data();
     double* T = gradStress_.data();
@@ -125,7 +151,7 @@ Foam::scalar Foam::meshless::bodyModels::tlsph::strainGradientStress() const
             std::fill_n(T + a*D3, D3, 0.0);
             continue;
         }
-        const double c = V0_(a, 0)*M;
+        const double c = V0_(a, 0)*std::pow(V0_(a, 0), 2.0/Dim)/12;
         for (int k = 0; k < Dim; ++k)
         {
             // The law is linear: C : e is its stress at F = I + e
