@@ -207,6 +207,28 @@ autoPtr<constitutiveLaw> law(const std::string& text, const label dim)
     );
 }
 
+//- The checkerboard mode of amplitude eps along x on a lattice block:
+//  the displaced positions x and the mode
+void checkerboard
+(
+    const block<2>& b,
+    const double dx,
+    const double eps,
+    std::vector<double>& x,
+    std::vector<double>& mode
+)
+{
+    x = b.X;
+    mode.assign(b.X.size(), 0);
+    for (label a = 0; a < b.n; ++a)
+    {
+        const label i = label(std::round(b.X[2*a]/dx));
+        const label j = label(std::round(b.X[2*a + 1]/dx));
+        mode[2*a] = ((i + j) % 2 ? 1 : -1)*eps;
+        x[2*a] += mode[2*a];
+    }
+}
+
 tensor rotation(const double angle)
 {
     const double c = std::cos(angle), s = std::sin(angle);
@@ -447,15 +469,8 @@ TEST(tlsph, checkerboardIsAZeroEnergyModeThatHourglassControlResists)
     const label nSide = 20;
     const double dx = 0.01, eps = 1e-4;
     const block<2> b(nSide, dx, 0);
-    std::vector<double> x(b.X);
-    std::vector<double> mode(b.X.size(), 0);
-    for (label a = 0; a < b.n; ++a)
-    {
-        const label i = label(std::round(b.X[2*a]/dx));
-        const label j = label(std::round(b.X[2*a + 1]/dx));
-        mode[2*a] = ((i + j) % 2 ? 1 : -1)*eps;
-        x[2*a] += mode[2*a];
-    }
+    std::vector<double> x, mode;
+    checkerboard(b, dx, eps, x, mode);
     const autoPtr<constitutiveLaw> L = law
     (
         "type linearElastic; kinematics finite; E 1e6; nu 0.3; plane strain;",
@@ -883,14 +898,8 @@ TEST(tlsph, taylorNodalIntegrationResistsTheCheckerboard)
     const label nSide = 20;
     const double dx = 0.01, eps = 1e-4;
     const block<2> b(nSide, dx, 0, 2);
-    std::vector<double> x(b.X), mode(b.X.size(), 0);
-    for (label a = 0; a < b.n; ++a)
-    {
-        const label i = label(std::round(b.X[2*a]/dx));
-        const label j = label(std::round(b.X[2*a + 1]/dx));
-        mode[2*a] = ((i + j) % 2 ? 1 : -1)*eps;
-        x[2*a] += mode[2*a];
-    }
+    std::vector<double> x, mode;
+    checkerboard(b, dx, eps, x, mode);
     const autoPtr<constitutiveLaw> L = law
     (
         "type linearElastic; kinematics small; E 1e6; nu 0.3; plane strain;",
