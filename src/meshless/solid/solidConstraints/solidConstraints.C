@@ -167,6 +167,22 @@ Foam::meshless::solidConstraints::solidConstraints
         }
         ++c;
     }
+
+    // A face load's share on a clamped image (a traction up to the clamp)
+    // acts on its mirror, reversed: the image moves as minus the mirror
+    if (partner_.size())
+    {
+        forAll(loadIndex_, l)
+        {
+            forAll(loadIndex_[l], k)
+            {
+                const label m = partner_[loadIndex_[l][k]];
+                if (m < 0) continue;
+                loadIndex_[l][k] = m;
+                loadShare_[l][k] = -loadShare_[l][k];
+            }
+        }
+    }
 }
 
 

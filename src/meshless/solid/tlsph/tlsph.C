@@ -247,27 +247,7 @@ void Foam::meshless::bodyModels::tlsph::evaluate
     }
 
     body_.addEffectAccelerations(t, acc_, costs);
-
-    // A load on a face can give shares to images (a traction up to the
-    // clamp): they act on the mirrors, reversed, as the internal forces
-    for (size_t k = 0; k < mirrors_.size(); ++k)
-    {
-        for (int i = 0; i < Dim; ++i)
-        {
-            imageAcc_[k*Dim + i] = acc[mirrors_[k].first*Dim + i];
-        }
-    }
     constraints_->addLoads(t, acc_);
-    const double* m = mass_.data();
-    for (size_t k = 0; k < mirrors_.size(); ++k)
-    {
-        const label g = mirrors_[k].first, mm = mirrors_[k].second;
-        for (int i = 0; i < Dim; ++i)
-        {
-            acc[mm*Dim + i] -=
-                (acc[g*Dim + i] - imageAcc_[k*Dim + i])*m[g]/m[mm];
-        }
-    }
 
     for (label a = 0; a < n; ++a)
     {
@@ -587,7 +567,6 @@ void Foam::meshless::bodyModels::tlsph::connect(particleScene& scene)
         image_[i] = 1;
         mirrors_.emplace_back(i, m);
     }
-    imageAcc_.assign(mirrors_.size()*body_.dim(), 0);
 
     Info<< "    " << body_.name() << ": tlsph, "
         << integratorNames[integrator_] << ", wave speed " << c_ << " m/s, "
