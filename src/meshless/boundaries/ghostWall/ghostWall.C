@@ -5,8 +5,12 @@
 #include "ghostWall.H"
 #include "particleScene.H"
 #include "ulphOperators.H"
+#include "cellLinkedList.H"
+#include "neighbourList.H"
 #include "addToRunTimeSelectionTable.H"
 #include <algorithm>
+#include <cstdint>
+#include <unordered_set>
 
 namespace Foam
 {
@@ -208,10 +212,143 @@ void Foam::meshless::bodyModels::ghostWall::moveTo(const scalar t)
 }
 
 
+template<int Dim>
+Foam::label Foam::meshless::bodyModels::ghostWall::completeFarSide
+(
+    const smoothingKernel& W
+)
+{
+    using namespace ulphOperators;
+    const particleSet& set = body_.particles();
+    if (!set.found("wallDistance")) return 0;
+
+    const particleField& dist = set.field("wallDistance");
+    const label n = set.size();
+    const double dx = body_.spacing();
+    const double R = W.radius();
+    const double* x = set.positions().data();
+    const double* nrm = normal_.data();
+    const double* V0 = V();
+
+    // Lattice index of every particle (relative to the first), packed in
+    // 21 bits per direction; a wall off its seeding lattice (a restart of
+    // a rotated wall) is not completed
+    const int64_t off = int64_t(1) << 20;
+    auto key = [off](const int64_t i, const int64_t j, const int64_t k)
+    {
+        return ((i + off) << 42) | ((j + off) << 21) | (k + off);
+    };
+    std::vector<int64_t> index(size_t(n)*3, 0);
+    std::unordered_set<int64_t> taken;
+    taken.reserve(2*n);
+    double dmax = 0;
+    for (label s = 0; s < n; ++s)
+    {
+        for (int d = 0; d < Dim; ++d)
+        {
+            const double r = (x[s*Dim + d] - x[d])/dx;
+            if (std::abs(r - std::round(r)) > 1e-6 || std::abs(r) >= off)
+            {
+                return -1;
+            }
+            index[3*s + d] = std::llround(r);
+        }
+        taken.insert(key(index[3*s], index[3*s + 1], index[3*s + 2]));
+        dmax = std::max(dmax, double(dist(s, 0)));
+    }
+
+    cellLinkedList cells(Dim, R);
+    cells.build(x, n);
+    neighbourList own;
+    own.build(cells, x, n, true);
+    const int m = int(std::ceil(R/dx));
+    const double tol = 1e-6*dx;
+    double* Mw = Mwall_.data();
+
+    label nCompleted = 0;
+    #pragma omp parallel for schedule(static) reduction(+:nCompleted)
+    for (label s = 0; s < n; ++s)
+    {
+        const Eigen::Map<const vectorD<Dim>> ns(nrm + size_t(s)*Dim);
+
+        // Only where the support meets the deepest layer of the same wall:
+        // a wall cut by the layer count, not a thin wall with fluid behind
+        bool reachesBack = false;
+        for (const label* jp = own.begin(s); jp != own.end(s); ++jp)
+        {
+            const Eigen::Map<const vectorD<Dim>> nj(nrm + size_t(*jp)*Dim);
+            if (dist(*jp, 0) >= dmax - 0.5*dx - tol && nj.dot(ns) > 0.5)
+            {
+                reachesBack = true;
+                break;
+            }
+        }
+        if (!reachesBack) continue;
+
+        // Depth of a lattice point: along the normal from the particle's
+        // nearest wall point, where the particle's own depth is dist(s)
+        tensorD<Dim> M = tensorD<Dim>::Zero();
+        const int kMax = Dim == 3 ? m : 0;
+        for (int a = -m; a <= m; ++a)
+        {
+            for (int b = -m; b <= m; ++b)
+            {
+                for (int c = -kMax; c <= kMax; ++c)
+                {
+                    const int abc[3] = {a, b, c};
+                    vectorD<Dim> delta;
+                    for (int d = 0; d < Dim; ++d) delta(d) = abc[d]*dx;
+                    const double r = delta.norm();
+                    const double w = r > 0 ? W.W(r) : 0;
+                    if
+                    (
+                        w == 0
+                     || dist(s, 0) + delta.dot(ns) <= dmax + tol
+                     || taken.count
+                        (
+                            key
+                            (
+                                index[3*s] + a,
+                                index[3*s + 1] + b,
+                                index[3*s + 2] + c
+                            )
+                        )
+                    )
+                    {
+                        continue;
+                    }
+                    M.noalias() += (w*V0[s])*(delta*delta.transpose());
+                }
+            }
+        }
+        if (M.squaredNorm() > 0)
+        {
+            Eigen::Map<tensorD<Dim>>(Mw + size_t(s)*Dim*Dim) += M;
+            ++nCompleted;
+        }
+    }
+    return nCompleted;
+}
+
+
 void Foam::meshless::bodyModels::ghostWall::prepare(const smoothingKernel& W)
 {
     if (prepared_) return;
     computeOwnShapeTensors(W, Mwall_);
+    const label nCompleted =
+        body_.dim() == 3 ? completeFarSide<3>(W) : completeFarSide<2>(W);
+    if (nCompleted > 0)
+    {
+        Info<< "    ghostWall " << body_.name() << ": " << nCompleted
+            << " particles' shape tensors completed behind the seeded"
+            << " layers (their supports reach past the deepest one)" << endl;
+    }
+    else if (nCompleted < 0)
+    {
+        Info<< "    ghostWall " << body_.name() << ": off its seeding"
+            << " lattice (rotated), shape tensors taken over the seeded"
+            << " layers only" << endl;
+    }
 
     // Kept in the motion's reference frame (R_ is the identity until the
     // motion is set up, see connect)
