@@ -339,9 +339,10 @@ void Foam::meshless::bodyModels::ghostWall::prepare(const smoothingKernel& W)
         body_.dim() == 3 ? completeFarSide<3>(W) : completeFarSide<2>(W);
     if (nCompleted > 0)
     {
-        Info<< "    ghostWall " << body_.name() << ": " << nCompleted
-            << " particles' shape tensors completed behind the seeded"
-            << " layers (their supports reach past the deepest one)" << endl;
+        Info<< "    ghostWall " << body_.name() << ": shape tensors"
+            << " completed behind the seeded layers for " << nCompleted
+            << " particles (their supports reach past the deepest one)"
+            << endl;
     }
     else if (nCompleted < 0)
     {
