@@ -232,7 +232,8 @@ Foam::label Foam::meshless::bodyModels::ghostWall::completeFarSide
 
     // Lattice index of every particle (relative to the first), packed in
     // 21 bits per direction; a wall off its seeding lattice (a restart of
-    // a rotated wall) is not completed
+    // a rotated wall) is not completed. The tolerance allows for positions
+    // written with few digits
     const int64_t off = int64_t(1) << 20;
     auto key = [off](const int64_t i, const int64_t j, const int64_t k)
     {
@@ -247,7 +248,7 @@ Foam::label Foam::meshless::bodyModels::ghostWall::completeFarSide
         for (int d = 0; d < Dim; ++d)
         {
             const double r = (x[s*Dim + d] - x[d])/dx;
-            if (std::abs(r - std::round(r)) > 1e-6 || std::abs(r) >= off)
+            if (std::abs(r - std::round(r)) > 1e-3 || std::abs(r) >= off)
             {
                 return -1;
             }
@@ -346,9 +347,9 @@ void Foam::meshless::bodyModels::ghostWall::prepare(const smoothingKernel& W)
     }
     else if (nCompleted < 0)
     {
-        Info<< "    ghostWall " << body_.name() << ": off its seeding"
-            << " lattice (rotated), shape tensors taken over the seeded"
-            << " layers only" << endl;
+        Info<< "    ghostWall " << body_.name() << ": particles off one"
+            << " lattice (a rotated wall), shape tensors taken over the"
+            << " seeded layers only" << endl;
     }
 
     // Kept in the motion's reference frame (R_ is the identity until the
