@@ -84,9 +84,13 @@ def main():
     return t.finish()
 
 
-def blow_up(t, case):
+def clear_later_times(case):
     for _, name in times(case)[1:]:
         shutil.rmtree(os.path.join(case, name))
+
+
+def blow_up(t, case):
+    clear_later_times(case)
     set_entry(case, "system/controlDict", "adjustTimeStep", "no")
     set_entry(case, "system/controlDict", "deltaT", 1e-3)
     before = snapshot(case)
@@ -108,8 +112,7 @@ def blow_up(t, case):
 
 
 def wall_balance(t, case):
-    for _, name in times(case)[1:]:
-        shutil.rmtree(os.path.join(case, name))
+    clear_later_times(case)
     dt = 1e-5
     for entry, value in (("adjustTimeStep", "no"), ("deltaT", dt),
                          ("endTime", dt), ("writeControl", "timeStep"),

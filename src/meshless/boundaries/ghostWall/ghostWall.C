@@ -262,9 +262,30 @@ Foam::label Foam::meshless::bodyModels::ghostWall::completeFarSide
     cells.build(x, n);
     neighbourList own;
     own.build(cells, x, n, true);
-    const int m = int(std::ceil(R/dx));
     const double tol = 1e-6*dx;
     double* Mw = Mwall_.data();
+
+    // The lattice offsets inside the support, with their kernel weights:
+    // the same for every particle (plain arrays: no Eigen alignment in a
+    // std::vector)
+    struct offset { int64_t i[3]; double delta[3]; double w; };
+    std::vector<offset> offsets;
+    const int m = int(std::ceil(R/dx));
+    const int kMax = Dim == 3 ? m : 0;
+    for (int a = -m; a <= m; ++a)
+    {
+        for (int b = -m; b <= m; ++b)
+        {
+            for (int c = -kMax; c <= kMax; ++c)
+            {
+                offset o{{a, b, c}, {a*dx, b*dx, c*dx}, 0};
+                const double r =
+                    Eigen::Map<const vectorD<Dim>>(o.delta).norm();
+                o.w = r > 0 ? W.W(r) : 0;
+                if (o.w > 0) offsets.push_back(o);
+            }
+        }
+    }
 
     label nCompleted = 0;
     #pragma omp parallel for schedule(static) reduction(+:nCompleted)
@@ -288,38 +309,21 @@ Foam::label Foam::meshless::bodyModels::ghostWall::completeFarSide
 
         // Depth of a lattice point: along the normal from the particle's
         // nearest wall point, where the particle's own depth is dist(s)
+        const int64_t* is = &index[3*s];
         tensorD<Dim> M = tensorD<Dim>::Zero();
-        const int kMax = Dim == 3 ? m : 0;
-        for (int a = -m; a <= m; ++a)
+        for (const offset& o : offsets)
         {
-            for (int b = -m; b <= m; ++b)
+            const Eigen::Map<const vectorD<Dim>> delta(o.delta);
+            if
+            (
+                dist(s, 0) + delta.dot(ns) > dmax + tol
+             && !taken.count
+                (
+                    key(is[0] + o.i[0], is[1] + o.i[1], is[2] + o.i[2])
+                )
+            )
             {
-                for (int c = -kMax; c <= kMax; ++c)
-                {
-                    const int abc[3] = {a, b, c};
-                    vectorD<Dim> delta;
-                    for (int d = 0; d < Dim; ++d) delta(d) = abc[d]*dx;
-                    const double r = delta.norm();
-                    const double w = r > 0 ? W.W(r) : 0;
-                    if
-                    (
-                        w == 0
-                     || dist(s, 0) + delta.dot(ns) <= dmax + tol
-                     || taken.count
-                        (
-                            key
-                            (
-                                index[3*s] + a,
-                                index[3*s + 1] + b,
-                                index[3*s + 2] + c
-                            )
-                        )
-                    )
-                    {
-                        continue;
-                    }
-                    M.noalias() += (w*V0[s])*(delta*delta.transpose());
-                }
+                M.noalias() += (o.w*V0[s])*(delta*delta.transpose());
             }
         }
         if (M.squaredNorm() > 0)
