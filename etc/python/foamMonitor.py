@@ -45,7 +45,8 @@ def run_cost(log_file):
     restarts (the solver's output appended, each run from 'Create time'):
     their times add up. A run's wall time is its time loop's, from its cost
     table; a run that stopped (or is still going) has no table, and its last
-    ClockTime stands for it. The solver's particle-steps per second cover
+    ClockTime stands for it. 'threads' is the last run's OpenMP thread
+    count from the scene summary. The solver's particle-steps per second cover
     one whole run; otherwise the rate follows from the steps, particles and
     wall time."""
     log = open(log_file).read()
@@ -59,12 +60,15 @@ def run_cost(log_file):
             timed.append((float((loop or clock)[-1]), float(cpu[-1])))
     rate = re.findall(r"Particle-steps per second: ([0-9.e+-]+)", log)
     particles = re.findall(r"particles = (\d+)", log)
+    threads = re.findall(r"OpenMP threads: (\d+)", log)
     cost = {
         "steps": len(re.findall(r"^Time = ", log, re.M)),
         "wall": sum(w for w, _ in timed) if timed else float("nan"),
         "cpu": sum(c for _, c in timed) if timed else float("nan"),
         "particles": int(particles[-1]) if particles else 0,
         "runs": len(runs),
+        # the threads of the last run; 0 when the log predates the record
+        "threads": int(threads[-1]) if threads else 0,
     }
     if len(runs) == 1 and rate:
         cost["rate"] = float(rate[-1])
@@ -72,6 +76,15 @@ def run_cost(log_file):
         cost["rate"] = (cost["steps"] * cost["particles"] / cost["wall"]
                         if cost["wall"] > 0 else float("nan"))
     return cost
+
+
+def wall_time(cost):
+    """The wall time of run_cost with the threads it ran on, for tables:
+    '150 s on 2 threads' (or '150 s' for a log without the record)"""
+    n = cost.get("threads", 0)
+    if not n:
+        return "%.0f s" % cost["wall"]
+    return "%.0f s on %d thread%s" % (cost["wall"], n, "" if n == 1 else "s")
 
 
 def body_cost(case, body, walls=None, solver="ulphPdFoam"):

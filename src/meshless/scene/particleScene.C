@@ -8,6 +8,9 @@
 #include "vtpWriter.H"
 #include "Time.H"
 #include <cmath>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 Foam::meshless::particleScene::particleScene(const polyMesh& mesh)
 :
@@ -291,6 +294,12 @@ void Foam::meshless::particleScene::describe(Ostream& os) const
     const int oldPrecision = os.precision(6);
     os  << "Scene: " << dim_ << "D, " << bodies_.size() << " bodies, "
         << nParticles() << " particles" << nl;
+    // Recorded so that a benchmark's log says what its wall time ran on
+    #ifdef _OPENMP
+    os  << "    OpenMP threads: " << omp_get_max_threads() << nl;
+    #else
+    os  << "    OpenMP threads: 1 (built without OpenMP)" << nl;
+    #endif
     for (const particleBody& b : bodies_)
     {
         b.describe(os);

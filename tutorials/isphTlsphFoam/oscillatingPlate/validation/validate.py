@@ -179,7 +179,8 @@ def analyse(case):
         "crossings": len(z), "endTime": t[-1],
         "particles": cost["particles"], "steps": cost["steps"],
         "wall": cost["wall"], "rate": cost["rate"],
-        "threads": os.environ.get("OMP_NUM_THREADS", "all"),
+        "threads": (cost["threads"]
+                    or os.environ.get("OMP_NUM_THREADS", "all")),
     }
 
 

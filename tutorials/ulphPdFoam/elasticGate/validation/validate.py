@@ -34,7 +34,7 @@ project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
 from foamMonitor import (case_spacing, interp, read_monitor,  # noqa: E402
-                         run_cost)
+                         run_cost, wall_time)
 from fsiChecks import stability_checks  # noqa: E402
 
 DEFAULT_DX = 0.00125
@@ -130,9 +130,9 @@ def main():
                 % (cost["particles"], cost["steps"]))
         f.write("| solid sub-steps per fluid step (max) | %d |\n"
                 % cost["sub"])
-        f.write("| wall time | %.0f s%s (2 shared cores, OMP_NUM_THREADS=1)"
-                " |\n" % (cost["wall"], "" if cost["runs"] == 1 else
-                          " in %d runs (restarts)" % cost["runs"]))
+        f.write("| wall time | %s%s |\n"
+                % (wall_time(cost), "" if cost["runs"] == 1 else
+                   " in %d runs (restarts)" % cost["runs"]))
         f.write("\n| check (fsiChecks: stable) | |\n|---|---|\n")
         for what, good in checks:
             f.write("| %s | %s |\n" % (what, "met" if good else "MISSED"))

@@ -28,7 +28,7 @@ project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
 from foamMonitor import (case_spacing, interp, pyplot,  # noqa: E402
-                         read_monitor, run_cost)
+                         read_monitor, run_cost, wall_time)
 
 DEFAULT_DX = 0.002
 PEAK_DROP = 0.15    # a peak is a maximum followed by this relative fall
@@ -113,10 +113,10 @@ def main():
                 " at | target: inside %.4f-%.4f m, %.3f-%.3f s |\n"
                 % (x_lo, x_hi, t_lo, t_hi))
         f.write("|---|---|---|---|---|---|---|---|---|---|\n")
-        f.write("| %g m (obstacle %d thick) | %d | %d | %d | %.0f s | %.3g |"
+        f.write("| %g m (obstacle %d thick) | %d | %d | %d | %s | %.3g |"
                 " %.3f s | %.4f m | %.3f s | %s |\n"
                 % (dx, round(0.012 / dx), cost["particles"], cost["steps"],
-                   max(sub) if sub else 1, cost["wall"], cost["rate"],
+                   max(sub) if sub else 1, wall_time(cost), cost["rate"],
                    ts[-1], xp, tp, verdict))
         f.write("\n| reference | first peak | at | RMS difference from this"
                 " run |\n|---|---|---|---|\n")

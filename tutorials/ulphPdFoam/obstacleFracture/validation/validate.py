@@ -32,7 +32,8 @@ project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
 from foamCloud import read_cloud, times  # noqa: E402
-from foamMonitor import case_spacing, pyplot, run_cost  # noqa: E402
+from foamMonitor import (case_spacing, pyplot, run_cost,  # noqa: E402
+                         wall_time)
 from fsiChecks import stability_checks  # noqa: E402
 
 
@@ -139,9 +140,9 @@ def main():
                 " | broken bonds | largest damage | particles with damage"
                 " > 0.5 | largest plastic strain |\n"
                 "|---|---|---|---|---|---|---|---|---|\n")
-        f.write("| %g m | %d | %d | %.0f s | %.3g | %d | %.3f | %d of %d |"
+        f.write("| %g m | %d | %d | %s | %.3g | %d | %.3f | %d of %d |"
                 " %.3f |\n"
-                % (dx, cost["particles"], cost["steps"], cost["wall"],
+                % (dx, cost["particles"], cost["steps"], wall_time(cost),
                    cost["rate"], nBroken, max(damage), nHalf, len(damage),
                    plastic))
         if cost["runs"] > 1:

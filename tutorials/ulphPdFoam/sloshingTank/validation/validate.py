@@ -30,7 +30,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
-from foamMonitor import body_cost  # noqa: E402
+from foamMonitor import body_cost, wall_time  # noqa: E402
 from swayTank import SwayTank  # noqa: E402
 
 T = 1.875
@@ -118,8 +118,8 @@ def main(case, check):
         " particle-steps/s | crest phase error (target < 3 % T) |"
         " RMS difference / linear amplitude |",
         "|---|---|---|---|---|---|---|---|",
-        "| %g m | %d | %d | %d | %.0f s | %.3g | %.2f %%: %s | %.1f %% |"
-        % (dx, cost["water"], cost["walls"], cost["steps"], cost["wall"],
+        "| %g m | %d | %d | %d | %s | %.3g | %.2f %%: %s | %.1f %% |"
+        % (dx, cost["water"], cost["walls"], cost["steps"], wall_time(cost),
            cost["rate"], 100 * phase, "met" if ok else "MISSED", 100 * rms),
         "",
         "Set-up: ULPH-NOSBPD paper 4.3 (tank 1.73 x 1.15 m, depth 0.5 m, "

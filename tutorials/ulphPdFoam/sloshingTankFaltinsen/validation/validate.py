@@ -51,7 +51,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
-from foamMonitor import body_cost  # noqa: E402
+from foamMonitor import body_cost, wall_time  # noqa: E402
 from swayTank import SwayTank  # noqa: E402
 
 T = 1.3
@@ -227,10 +227,10 @@ def main(case, check):
         " phase error, largest / mean (% of T) | RMS difference / largest"
         " experimental elevation |",
         "|---|---|---|---|---|---|---|---|---|---|---|---|",
-        "| %g m | %d | %d | %g s | %d | %.0f s (%.0f s) | %.3g | %d of %d |"
+        "| %g m | %d | %d | %g s | %d | %s (%.0f s) | %.3g | %d of %d |"
         " %.1f %%: %s | %+.1f %% | %.1f / %.1f | %.1f %% |"
         % (dx, cost["water"], cost["walls"], tend, cost["steps"],
-           cost["wall"], cost["cpu"], cost["rate"], len(good), len(rows), 100 * amp,
+           wall_time(cost), cost["cpu"], cost["rate"], len(good), len(rows), 100 * amp,
            status, 100 * ratio, 100 * phase_max,
            100 * phase_mean, 100 * rms),
         "",
