@@ -5,6 +5,8 @@
 #include "densityFilter.H"
 #include "dictionaryChecks.H"
 #include "addToRunTimeSelectionTable.H"
+#include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 
 namespace Foam
@@ -20,6 +22,14 @@ namespace effects
 }
 
 
+const Foam::Enum<Foam::meshless::effects::densityFilter::methodType>
+Foam::meshless::effects::densityFilter::methodTypeNames
+({
+    { methodType::Shepard, "Shepard" },
+    { methodType::MLS, "MLS" },
+});
+
+
 Foam::meshless::effects::densityFilter::densityFilter
 (
     const word& name,
@@ -29,22 +39,95 @@ Foam::meshless::effects::densityFilter::densityFilter
 :
     effect(name, dict, body),
     interval_(readLabelInRange(dict, "interval", 1, labelMax)),
+    method_
+    (
+        methodTypeNames.getOrDefault("method", dict, methodType::Shepard)
+    ),
     filtered_()
 {}
 
 
-void Foam::meshless::effects::densityFilter::correct
+template<int Dim>
+void Foam::meshless::effects::densityFilter::filterMLS
 (
     const pairContext& ctx,
-    const label timeIndex
-) const
+    double* out
+)
 {
-    if (timeIndex % interval_ != 0) return;
+    typedef Eigen::Matrix<double, Dim + 1, Dim + 1> matrix;
+    typedef Eigen::Matrix<double, Dim + 1, 1> vector;
 
+    const smoothingKernel& W = *ctx.W;
+    const double W0 = W.W(0);
+    // Offsets in units of h keep A's blocks of one order of magnitude
+    const double invH = 1.0/W.h();
+
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < ctx.n; ++i)
+    {
+        const double Vi = ctx.mass[i]/ctx.rho[i];
+        matrix A = matrix::Zero();
+        vector b = vector::Zero();
+        A(0, 0) = W0*Vi;
+        b(0) = W0*ctx.mass[i];
+        double sumM = W0*ctx.mass[i];
+        double sumV = W0*Vi;
+        double rhoMin = ctx.rho[i], rhoMax = ctx.rho[i];
+        for (size_t k = 0; k < ctx.sources.size(); ++k)
+        {
+            const neighbourSource& src = ctx.sources[k];
+            const double* m = ctx.massSrc[k];
+            for (const label* jp = src.list->begin(i); jp != src.list->end(i); ++jp)
+            {
+                const label j = *jp;
+                vector p;
+                p(0) = 1;
+                double r2 = 0;
+                for (label d = 0; d < Dim; ++d)
+                {
+                    const double dx = src.x[j*Dim + d] - ctx.x[i*Dim + d];
+                    p(d + 1) = dx*invH;
+                    r2 += dx*dx;
+                }
+                const double w = W.W(std::sqrt(r2));
+                const double Vj = k == 0 ? m[j]/ctx.rho[j] : src.V[j];
+                A.noalias() += (w*Vj)*p*p.transpose();
+                b.noalias() += (w*m[j])*p;
+                sumM += w*m[j];
+                sumV += w*Vj;
+                const double rhoj = m[j]/Vj;
+                rhoMin = std::min(rhoMin, rhoj);
+                rhoMax = std::max(rhoMax, rhoj);
+            }
+        }
+
+        double rho = sumM/sumV;
+        Eigen::SelfAdjointEigenSolver<matrix> eig(A, Eigen::EigenvaluesOnly);
+        const vector lambda = eig.eigenvalues();
+        if (lambda(0) > 1e-3*lambda(Dim))
+        {
+            // Within the densities it fits: a fit that extrapolates
+            // (a thin jet) must not invent a density
+            const double fit = A.ldlt().solve(b)(0);
+            if (std::isfinite(fit))
+            {
+                rho = std::min(std::max(fit, rhoMin), rhoMax);
+            }
+        }
+        out[i] = rho;
+    }
+}
+
+
+void Foam::meshless::effects::densityFilter::filterShepard
+(
+    const pairContext& ctx,
+    double* out
+)
+{
     const smoothingKernel& W = *ctx.W;
     const label dim = ctx.dim;
     const double W0 = W.W(0);
-    filtered_.resize(ctx.n);
 
     #pragma omp parallel for schedule(static)
     for (label i = 0; i < ctx.n; ++i)
@@ -71,14 +154,49 @@ void Foam::meshless::effects::densityFilter::correct
                 sumV += w*Vj;
             }
         }
-        filtered_[i] = sumM/sumV;
+        out[i] = sumM/sumV;
     }
+}
+
+
+void Foam::meshless::effects::densityFilter::filter
+(
+    const pairContext& ctx,
+    const methodType method,
+    double* out
+)
+{
+    if (method == methodType::Shepard) filterShepard(ctx, out);
+    else if (ctx.dim == 2) filterMLS<2>(ctx, out);
+    else filterMLS<3>(ctx, out);
+}
+
+
+void Foam::meshless::effects::densityFilter::correct
+(
+    const pairContext& ctx,
+    const label timeIndex
+) const
+{
+    if (timeIndex % interval_ != 0) return;
+
+    // A Jacobi update: every particle filtered from the old densities
+    filtered_.resize(ctx.n);
+    filter(ctx, method_, filtered_.data());
     std::copy(filtered_.begin(), filtered_.end(), ctx.rho);
 }
 
 
 void Foam::meshless::effects::densityFilter::describe(Ostream& os) const
 {
-    os  << "Shepard density filter (ULPH eq. 24) every " << interval_
-        << " steps";
+    if (method_ == methodType::MLS)
+    {
+        os  << "MLS density filter (linear fit) every " << interval_
+            << " steps";
+    }
+    else
+    {
+        os  << "Shepard density filter (ULPH eq. 24) every " << interval_
+            << " steps";
+    }
 }
