@@ -6,7 +6,8 @@ Water 0.1 m deep in a 0.2 m wide 2D tank (dx = 5 mm, fixed ghost walls of
 1 s. Checks against hydrostatics:
 - the bottom row's mean pressure is rho g (H - dx/2) within 1 %;
 - the RMS spurious speed is below 1e-3 sqrt(g H); the largest speed (free-
-  surface particles by the walls) below 3e-3 sqrt(g H);
+  surface particles by the walls) below 3e-3 sqrt(g H) (ulphStillWaterFine
+  meets 1e-3 for it too, and says what sets it);
 - no particle leaves the tank or is lost; no NaN (the solver would stop);
 - the log lists the fluid model, the walls and the named effects only.
 Then, with a fixed step 13 times the stable one, the run must stop with a
