@@ -16,8 +16,8 @@ for the paper's Shepard filter with free-slip walls):
 - the Shepard filter (eq. 24) raises the free surface's density at every
   filtering and keeps the top two rows oscillating against each other
   (largest 1.1e-3 at 2.5 mm with no-slip walls; MLS: 0.84e-3);
-- free-slip side walls grow a chain of small vortices along them from
-  about 0.8 s (2.7e-3 at 1 s at 2.5 mm);
+- free-slip side walls grow a chain of small vortices along them, from
+  about 0.4 s at 2.5 mm (3.7e-3 at 1 s, with MLS) and 0.8 s at 5 mm;
 - what remains is a slow circulation from the corners where the free
   surface meets the walls, up the walls and inwards along the surface; it
   halves with the spacing (1.7e-3 at 5 mm, 0.84e-3 at 2.5 mm).
