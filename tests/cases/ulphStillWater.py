@@ -2,12 +2,19 @@
 """Case test: still water in a tank with the ULPH fluid (ulphPdFoam).
 
 Water 0.1 m deep in a 0.2 m wide 2D tank (dx = 5 mm, fixed ghost walls of
-4 layers, Gaussian kernel h = 1.2 dx, c0 = 20 m/s, hydrostatic start) for
-1 s. Checks against hydrostatics:
+4 layers, free slip, Gaussian kernel h = 1.2 dx, c0 = 20 m/s, the paper's
+Shepard filter, hydrostatic start) for 2 s. Checks against hydrostatics:
 - the bottom row's mean pressure is rho g (H - dx/2) within 1 %;
-- the RMS spurious speed is below 1e-3 sqrt(g H); the largest speed (free-
-  surface particles by the walls) below 3e-3 sqrt(g H) (ulphStillWaterFine
-  meets 1e-3 for it too, and says what sets it);
+- the RMS spurious speed stays below 1.2e-3 sqrt(g H) at every written
+  time (1.0e-3 from 1 s on: the slow circulation from the corners where
+  the surface meets the walls, which halves with the spacing;
+  ulphStillWaterFine meets the issue's 1e-3 sqrt(g H) for the largest
+  speed at 2.5 mm, and says what sets it);
+- the largest speed (free-surface particles by the walls) is below
+  3e-3 sqrt(g H) at 2 s, and not above its largest over 0.5-1 s: free-slip
+  walls used to grow a chain of vortices along them (3.6e-3 at 2 s and
+  rising), fed by the ghosts' averaged tangential velocity through the
+  continuity equation (ghostBoundary);
 - no particle leaves the tank or is lost; no NaN (the solver would stop);
 - the log lists the fluid model, the walls and the named effects only.
 Then, with a fixed step 13 times the stable one, the run must stop with a
@@ -54,7 +61,7 @@ def main():
                 "effect viscosity" not in out)
 
         t_end, last = times(case)[-1]
-        t.check_close("ran to 1 s", t_end, 1.0, 1e-9)
+        t.check_close("ran to 2 s", t_end, 2.0, 1e-9)
         c = read_cloud(case, last, "water")
         x, U, p = c["positions"], c["U"], c["p"]
         t.check_equal("no particle lost", len(x), 40 * 20)
@@ -64,13 +71,20 @@ def main():
         t.check_close("bottom pressure vs rho g (H - dx/2)",
                       sum(bottom) / len(bottom), expected, 0.01)
 
-        speeds = [math.hypot(u[0], u[1]) for u in U]
-        rms = math.sqrt(sum(s * s for s in speeds) / len(speeds))
         scale = math.sqrt(G * H)
-        t.check("RMS spurious speed %.2e < 1e-3 sqrt(gH) = %.2e"
-                % (rms, 1e-3 * scale), rms < 1e-3 * scale)
-        t.check("max spurious speed %.2e < 3e-3 sqrt(gH) = %.2e"
-                % (max(speeds), 3e-3 * scale), max(speeds) < 3e-3 * scale)
+        history = speed_history(case)
+        rms = max(r for _, r, _ in history)
+        t.check("RMS spurious speed, largest over 2 s, %.2e < 1.2e-3"
+                " sqrt(gH) = %.2e" % (rms, 1.2e-3 * scale),
+                rms < 1.2e-3 * scale, str(history))
+        largest = history[-1][2]
+        t.check("max spurious speed at 2 s %.2e < 3e-3 sqrt(gH) = %.2e"
+                % (largest, 3e-3 * scale), largest < 3e-3 * scale)
+        early = max(m for time, _, m in history if 0.5 <= time <= 1)
+        late = max(m for time, _, m in history if time >= 1.5)
+        t.check("max spurious speed not growing: %.2e over 1.5-2 s <="
+                " %.2e over 0.5-1 s" % (late, early), late <= early,
+                str(history))
 
         inside = all(0 <= xi[0] <= WIDTH and xi[1] >= 0 for xi in x)
         t.check("every particle inside the tank", inside)
@@ -83,6 +97,17 @@ def main():
     finally:
         shutil.rmtree(work, ignore_errors=True)
     return t.finish()
+
+
+def speed_history(case):
+    """(time, RMS speed, largest speed) at every written time after 0"""
+    out = []
+    for value, name in times(case)[1:]:
+        U = read_cloud(case, name, "water")["U"]
+        speeds = [math.hypot(u[0], u[1]) for u in U]
+        rms = math.sqrt(sum(s * s for s in speeds) / len(speeds))
+        out.append((value, rms, max(speeds)))
+    return out
 
 
 def clear_later_times(case):

@@ -5,7 +5,8 @@ Description
     ULPH non-local operators (eq. 12-15): gradient and divergence of linear
     fields are exact (1e-10) on lattices and randomly perturbed particles in
     2D and 3D, at every particle (interior and boundary), also when the
-    neighbours come from two bodies; the documented fallback for degenerate
+    neighbours come from two bodies; a free-slip wall passes only its
+    normal velocity to the divergence; the documented fallback for degenerate
     shape tensors gives exact derivatives along resolved directions, zero
     across, and no NaN; the full support's eigenvalue is the interior
     particle's; an eigenvalue floor of a tenth of it keeps the operators
@@ -302,55 +303,132 @@ TEST(ulphOperators, shapeTensorFloorBoundsAThinJet)
 }
 
 
+//- A fluid half (x < 0.1) and a wall half of one perturbed 2D lattice,
+//  with the fluid's neighbour sources in both and its M^-1 over both
+struct fluidAndWall
+{
+    const double dx = 0.01;
+    cloud fluid{2, {}, {}}, wall{2, {}, {}};
+    autoPtr<smoothingKernel> W;
+    cellLinkedList cellsF, cellsW;
+    neighbourList ff, fw;
+    std::vector<neighbourSource> both;
+    particleField Minv;
+
+    fluidAndWall()
+    :
+        W(ulphKernel(2, dx)),
+        cellsF(2, W->radius()),
+        cellsW(2, W->radius()),
+        Minv("Minv", particleField::kind::tensor, 2)
+    {
+        const cloud all = lattice(2, 20, dx, 0.25);
+        for (label i = 0; i < all.size(); ++i)
+        {
+            cloud& c = all.x[2*i] < 0.1 ? fluid : wall;
+            c.x.push_back(all.x[2*i]);
+            c.x.push_back(all.x[2*i + 1]);
+            c.V.push_back(all.V[i]);
+        }
+        cellsF.build(fluid.x.data(), fluid.size());
+        cellsW.build(wall.x.data(), wall.size());
+        ff.build(cellsF, fluid.x.data(), fluid.size(), true);
+        fw.build(cellsW, fluid.x.data(), fluid.size(), false);
+        both =
+        {
+            {&ff, fluid.x.data(), fluid.V.data()},
+            {&fw, wall.x.data(), wall.V.data()}
+        };
+        Minv.resize(fluid.size());
+        ulphOperators::shapeTensorInverse<2>
+        (
+            fluid.x.data(), fluid.size(), both, *W, Minv
+        );
+    }
+
+    //- The fluid's divergence of uF, uW (wall normals n, or none)
+    std::vector<double> divergence
+    (
+        const std::vector<double>& uF,
+        const std::vector<double>& uW,
+        const std::vector<double>& n
+    ) const
+    {
+        std::vector<double> div(fluid.size());
+        ulphOperators::divergence<2>
+        (
+            fluid.x.data(), fluid.size(), both, *W, Minv.data(), uF.data(),
+            {uF.data(), uW.data()}, div.data(),
+            {nullptr, n.empty() ? nullptr : n.data()}
+        );
+        return div;
+    }
+};
+
+
 TEST(ulphOperators, neighboursFromTwoBodies)
 {
-    // A fluid half and a wall half of one perturbed lattice: the fluid's
-    // operators sum over both and stay exact
-    const double dx = 0.01;
-    const cloud all = lattice(2, 20, dx, 0.25);
-    cloud fluid{2, {}, {}}, wall{2, {}, {}};
-    for (label i = 0; i < all.size(); ++i)
-    {
-        cloud& c = all.x[2*i] < 0.1 ? fluid : wall;
-        c.x.push_back(all.x[2*i]);
-        c.x.push_back(all.x[2*i + 1]);
-        c.V.push_back(all.V[i]);
-    }
-    autoPtr<smoothingKernel> W = ulphKernel(2, dx);
-    cellLinkedList cellsF(2, W->radius()), cellsW(2, W->radius());
-    cellsF.build(fluid.x.data(), fluid.size());
-    cellsW.build(wall.x.data(), wall.size());
-    neighbourList ff, fw;
-    ff.build(cellsF, fluid.x.data(), fluid.size(), true);
-    fw.build(cellsW, fluid.x.data(), fluid.size(), false);
-    EXPECT_GT(fw.nPairs(), 0);
-
-    const std::vector<neighbourSource> both
-    {
-        {&ff, fluid.x.data(), fluid.V.data()},
-        {&fw, wall.x.data(), wall.V.data()}
-    };
-    particleField Minv("Minv", particleField::kind::tensor, 2);
-    Minv.resize(fluid.size());
-    ulphOperators::shapeTensorInverse<2>
-    (
-        fluid.x.data(), fluid.size(), both, *W, Minv
-    );
-
+    // The fluid's operators sum over both bodies and stay exact
+    const fluidAndWall fw;
+    EXPECT_GT(fw.fw.nPairs(), 0);
     const double b[2] = {-1.5, 4.0};
-    const auto fF = linearScalar(fluid, b);
-    const auto fW = linearScalar(wall, b);
-    std::vector<double> grad(fluid.x.size());
+    const auto fF = linearScalar(fw.fluid, b);
+    const auto fW = linearScalar(fw.wall, b);
+    std::vector<double> grad(fw.fluid.x.size());
     ulphOperators::gradient<2>
     (
-        fluid.x.data(), fluid.size(), both, *W, Minv.data(), fF.data(),
-        {fF.data(), fW.data()}, grad.data()
+        fw.fluid.x.data(), fw.fluid.size(), fw.both, *fw.W, fw.Minv.data(),
+        fF.data(), {fF.data(), fW.data()}, grad.data()
     );
-    for (label i = 0; i < fluid.size(); ++i)
+    for (label i = 0; i < fw.fluid.size(); ++i)
     {
         EXPECT_NEAR(grad[2*i], b[0], 1e-10);
         EXPECT_NEAR(grad[2*i + 1], b[1], 1e-10);
     }
+}
+
+
+TEST(ulphOperators, freeSlipWallPassesOnlyItsNormalVelocity)
+{
+    // A free-slip wall (normals (1, 0)) stands for the fluid particle's own
+    // mirror image: the wall's tangential velocities must not enter the
+    // divergence, its normal velocity must
+    const fluidAndWall fw;
+    const label nF = fw.fluid.size(), nW = fw.wall.size();
+    std::vector<double> normals(2*nW, 0.0);
+    for (label j = 0; j < nW; ++j) normals[2*j] = 1;
+
+    // Fluid in uniform motion along the wall; the wall's particles with
+    // scattered tangential velocities, as the averaged ghost values are
+    std::vector<double> uF(2*nF, 0.0), uW(2*nW, 0.0);
+    for (label i = 0; i < nF; ++i) uF[2*i + 1] = 0.4;
+    std::mt19937_64 gen(5);
+    std::uniform_real_distribution<double> r(-1, 1);
+    for (label j = 0; j < nW; ++j) uW[2*j + 1] = r(gen);
+
+    const auto slip = fw.divergence(uF, uW, normals);
+    const auto plain = fw.divergence(uF, uW, {});
+    double errSlip = 0, devPlain = 0;
+    for (label i = 0; i < nF; ++i)
+    {
+        errSlip = std::max(errSlip, std::abs(slip[i]));
+        devPlain = std::max(devPlain, std::abs(plain[i]));
+    }
+    EXPECT_LT(errSlip, 1e-12) << "free slip: uniform tangential flow";
+    EXPECT_GT(devPlain, 1) << "without the normals the wall's values count";
+
+    // A wall moving along its normal: the same as without the projection
+    std::fill(uF.begin(), uF.end(), 0.0);
+    for (label j = 0; j < nW; ++j) uW[2*j] = 0.3, uW[2*j + 1] = 0;
+    const auto slipN = fw.divergence(uF, uW, normals);
+    const auto plainN = fw.divergence(uF, uW, {});
+    double maxDiv = 0;
+    for (label i = 0; i < nF; ++i)
+    {
+        EXPECT_NEAR(slipN[i], plainN[i], 1e-10);
+        maxDiv = std::max(maxDiv, std::abs(slipN[i]));
+    }
+    EXPECT_GT(maxDiv, 1) << "the wall's normal motion reaches the fluid";
 }
 
 

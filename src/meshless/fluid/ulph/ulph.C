@@ -350,6 +350,7 @@ void Foam::meshless::bodyModels::ulph::setContext()
     ctx_.massSrc.resize(nSrc);
     Ssrc_.resize(nSrc);
     Ucont_.resize(nSrc);
+    slipNormal_.assign(nSrc, nullptr);
     ctx_.wallSource.assign(nSrc, false);
 
     ctx_.sources[0] = {&own_, ctx_.x, V_.data()};
@@ -366,6 +367,7 @@ void Foam::meshless::bodyModels::ulph::setContext()
         ctx_.massSrc[k + 1] = walls_[k]->mass();
         Ssrc_[k + 1] = walls_[k]->S();
         Ucont_[k + 1] = walls_[k]->Ucont();
+        slipNormal_[k + 1] = walls_[k]->slipNormals();
         // A wall of the fluid's 'walls', not a coupled body's ghosts
         ctx_.wallSource[k + 1] =
             dynamic_cast<const ghostWall*>(walls_[k]) != nullptr;
@@ -471,7 +473,7 @@ void Foam::meshless::bodyModels::ulph::evaluate
     ulphEquations::continuity<Dim>
     (
         n, x, U_.data(), rho, Minv_.data(), ctx_.sources, Ucont_, W,
-        drho_.data()
+        drho_.data(), slipNormal_
     );
     ulphEquations::momentum<Dim>
     (
