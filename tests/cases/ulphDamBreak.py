@@ -5,13 +5,13 @@ Runs tutorials/ulphPdFoam/damBreak with -dx 0.002 on a scratch copy to
 T = 2.56 (the front near the far wall) and checks: the run ends without a
 blow-up; no particle goes more than half a spacing into a wall; the front
 follows Martin & Moyce (1952) to the far wall with an RMS error below
-0.16 H at this resolution (0.147 H: the artificial viscosity grows with h
-and, against the no-slip floor, slows the thin tongue, which lags by 0.28 H
-at T = 2.40; the 5 % target is for the paper's 1 mm, 0.056 H, see the
-tutorial's validation/result.md); the front is
-at 3H when the experiment's is; the clouds read through ParaView's reader;
-the log shows the
-cost table and no viscosity effect (not named in the case).
+0.08 H at this resolution (0.046 H; at the paper's 1 mm the front leads,
+0.116 H, see the tutorial's README); the front is at 3H when the
+experiment's is; the water carries no tension (minPressure 0: without it
+the tongue's tension threw particles out at this spacing in four of six
+runs that differed only in maxCo or the write interval); the clouds read
+through ParaView's reader; the log shows the cost table and no viscosity
+effect (not named in the case).
 """
 import os
 import re
@@ -38,7 +38,7 @@ def main():
         t.check("validation ran", m is not None, out[-1500:])
         if m:
             rms, depth = float(m.group(1)), float(m.group(2))
-            t.check("front RMS error %.4f H < 0.16 H" % rms, rms < 0.16)
+            t.check("front RMS error %.4f H < 0.08 H" % rms, rms < 0.08)
             t.check("no particle in a wall (%.2f dx < 0.5 dx)" % depth,
                     depth < 0.5)
         rows = re.findall(r"\| 1\.929 \| 3\.001 \| ([0-9.]+) \|", out)
@@ -52,6 +52,10 @@ def main():
                       water["particles"], 29 * 29)
         t.check("reader: water fields", {"U", "p", "rho", "mass", "id"}
                 <= set(water["arrays"]), str(sorted(water["arrays"])))
+        if "p" in water["arrays"]:
+            pmin = water["arrays"]["p"]["range"][0]
+            t.check("no tension in the water at the end (p >= 0: %g Pa)"
+                    % pmin, pmin >= 0)
         log = open(os.path.join(case, "log.ulphPdFoam")).read()
         for words in ("Cost per model and effect", "water: densityFilter",
                       "water: artificialViscosity", "End"):

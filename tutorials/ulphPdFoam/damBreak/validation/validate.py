@@ -67,12 +67,15 @@ def interpolate(T, X, t):
 
 def case_cost(case):
     """foamMonitor's body_cost of the water (with the walls) and the
-    artificial viscosity's alpha"""
+    artificial viscosity's alpha and the water's minPressure"""
     props = open(os.path.join(case, "constant", "particleProperties")).read()
     alpha = re.search(r"artificialViscosity\s*\{\s*alpha\s+([0-9.eE+-]+)",
                       props)
     cost = body_cost(case, "water", walls="walls")
     cost["alpha"] = alpha.group(1) if alpha else "none"
+    pmin = re.search(r"\n\s*minPressure\s+([0-9.eE+-]+)", props)
+    cost["minPressure"] = ("minPressure %s Pa" % pmin.group(1) if pmin
+                           else "no pressure floor")
     return cost
 
 
@@ -132,8 +135,9 @@ def main(case, check):
         "Set-up: ULPH-NOSBPD paper 4.2, Table 2 (L = H = 0.057 m, tank 4H, "
         "c0 = 40 m/s, Gaussian kernel h = 1.2 dx, horizon 3h, density "
         "filter every 20 steps), artificial viscosity alpha = %s (paper: "
-        "0.02), no-slip ghost walls of 4 layers, hydrostatic start, "
-        "adaptive step maxCo 0.25." % cost["alpha"],
+        "0.02), %s, no-slip ghost walls of 4 layers, hydrostatic "
+        "start, adaptive step maxCo 0.25." % (cost["alpha"],
+                                              cost["minPressure"]),
         "",
         "| T = t sqrt(g/H) | experiment x/H | ulphPdFoam x/H | difference |",
         "|---|---|---|---|",
