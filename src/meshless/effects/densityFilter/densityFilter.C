@@ -47,8 +47,8 @@ Foam::meshless::effects::densityFilter::densityFilter
 {}
 
 
-template<int Dim>
-void Foam::meshless::effects::densityFilter::filterMLS
+template<int Dim, bool Fit>
+void Foam::meshless::effects::densityFilter::filterPass
 (
     const pairContext& ctx,
     double* out
@@ -66,13 +66,17 @@ void Foam::meshless::effects::densityFilter::filterMLS
     for (label i = 0; i < ctx.n; ++i)
     {
         const double Vi = ctx.mass[i]/ctx.rho[i];
-        matrix A = matrix::Zero();
-        vector b = vector::Zero();
-        A(0, 0) = W0*Vi;
-        b(0) = W0*ctx.mass[i];
+        // Shepard's sums (eq. 24), and the fit's moments when fitting
         double sumM = W0*ctx.mass[i];
         double sumV = W0*Vi;
+        matrix A = matrix::Zero();
+        vector b = vector::Zero();
         double rhoMin = ctx.rho[i], rhoMax = ctx.rho[i];
+        if (Fit)
+        {
+            A(0, 0) = W0*Vi;
+            b(0) = W0*ctx.mass[i];
+        }
         for (size_t k = 0; k < ctx.sources.size(); ++k)
         {
             const neighbourSource& src = ctx.sources[k];
@@ -90,71 +94,41 @@ void Foam::meshless::effects::densityFilter::filterMLS
                     r2 += dx*dx;
                 }
                 const double w = W.W(std::sqrt(r2));
-                const double Vj = k == 0 ? m[j]/ctx.rho[j] : src.V[j];
-                A.noalias() += (w*Vj)*p*p.transpose();
-                b.noalias() += (w*m[j])*p;
-                sumM += w*m[j];
-                sumV += w*Vj;
-                const double rhoj = m[j]/Vj;
-                rhoMin = std::min(rhoMin, rhoj);
-                rhoMax = std::max(rhoMax, rhoj);
-            }
-        }
-
-        double rho = sumM/sumV;
-        Eigen::SelfAdjointEigenSolver<matrix> eig(A, Eigen::EigenvaluesOnly);
-        const vector lambda = eig.eigenvalues();
-        if (lambda(0) > 1e-3*lambda(Dim))
-        {
-            // Within the densities it fits: a fit that extrapolates
-            // (a thin jet) must not invent a density
-            const double fit = A.ldlt().solve(b)(0);
-            if (std::isfinite(fit))
-            {
-                rho = std::min(std::max(fit, rhoMin), rhoMax);
-            }
-        }
-        out[i] = rho;
-    }
-}
-
-
-void Foam::meshless::effects::densityFilter::filterShepard
-(
-    const pairContext& ctx,
-    double* out
-)
-{
-    const smoothingKernel& W = *ctx.W;
-    const label dim = ctx.dim;
-    const double W0 = W.W(0);
-
-    #pragma omp parallel for schedule(static)
-    for (label i = 0; i < ctx.n; ++i)
-    {
-        double sumM = W0*ctx.mass[i];
-        double sumV = W0*ctx.mass[i]/ctx.rho[i];
-        for (size_t k = 0; k < ctx.sources.size(); ++k)
-        {
-            const neighbourSource& src = ctx.sources[k];
-            const double* m = ctx.massSrc[k];
-            for (const label* jp = src.list->begin(i); jp != src.list->end(i); ++jp)
-            {
-                const label j = *jp;
-                double r2 = 0;
-                for (label d = 0; d < dim; ++d)
-                {
-                    const double dx = src.x[j*dim + d] - ctx.x[i*dim + d];
-                    r2 += dx*dx;
-                }
-                const double w = W.W(std::sqrt(r2));
                 // Own particles: V = m/rho now; walls: their volume
                 const double Vj = k == 0 ? m[j]/ctx.rho[j] : src.V[j];
                 sumM += w*m[j];
                 sumV += w*Vj;
+                if (Fit)
+                {
+                    A.noalias() += (w*Vj)*p*p.transpose();
+                    b.noalias() += (w*m[j])*p;
+                    const double rhoj = m[j]/Vj;
+                    rhoMin = std::min(rhoMin, rhoj);
+                    rhoMax = std::max(rhoMax, rhoj);
+                }
             }
         }
-        out[i] = sumM/sumV;
+
+        double rho = sumM/sumV;
+        if (Fit)
+        {
+            Eigen::SelfAdjointEigenSolver<matrix> eig
+            (
+                A, Eigen::EigenvaluesOnly
+            );
+            const vector lambda = eig.eigenvalues();
+            if (lambda(0) > 1e-3*lambda(Dim))
+            {
+                // Within the densities it fits: a fit that extrapolates
+                // (a thin jet) must not invent a density
+                const double fit = A.ldlt().solve(b)(0);
+                if (std::isfinite(fit))
+                {
+                    rho = std::min(std::max(fit, rhoMin), rhoMax);
+                }
+            }
+        }
+        out[i] = rho;
     }
 }
 
@@ -166,9 +140,15 @@ void Foam::meshless::effects::densityFilter::filter
     double* out
 )
 {
-    if (method == methodType::Shepard) filterShepard(ctx, out);
-    else if (ctx.dim == 2) filterMLS<2>(ctx, out);
-    else filterMLS<3>(ctx, out);
+    const bool fit = method == methodType::MLS;
+    if (ctx.dim == 2)
+    {
+        fit ? filterPass<2, true>(ctx, out) : filterPass<2, false>(ctx, out);
+    }
+    else
+    {
+        fit ? filterPass<3, true>(ctx, out) : filterPass<3, false>(ctx, out);
+    }
 }
 
 
@@ -189,14 +169,8 @@ void Foam::meshless::effects::densityFilter::correct
 
 void Foam::meshless::effects::densityFilter::describe(Ostream& os) const
 {
-    if (method_ == methodType::MLS)
-    {
-        os  << "MLS density filter (linear fit) every " << interval_
-            << " steps";
-    }
-    else
-    {
-        os  << "Shepard density filter (ULPH eq. 24) every " << interval_
-            << " steps";
-    }
+    os  << (method_ == methodType::MLS
+            ? "MLS density filter (linear fit)"
+            : "Shepard density filter (ULPH eq. 24)")
+        << " every " << interval_ << " steps";
 }
