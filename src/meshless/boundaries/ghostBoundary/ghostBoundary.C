@@ -231,10 +231,12 @@ void Foam::meshless::ghostBoundary::interpolateImpl
         m[s] = rho[s]*V0[s];
 
         const Eigen::Map<const vectorD<Dim>> uw(Uw + size_t(s)*Dim);
+        // Continuity sees the wall's own velocity; next to a free-slip
+        // wall the fluid reads only its normal part (slipNormals())
+        Eigen::Map<vectorD<Dim>>(Uc + size_t(s)*Dim) = uw;
         if (noSlip)
         {
             Eigen::Map<vectorD<Dim>>(Uv + size_t(s)*Dim) = 2*uw - uTilde;
-            Eigen::Map<vectorD<Dim>>(Uc + size_t(s)*Dim) = uw;
         }
         else
         {
@@ -243,8 +245,6 @@ void Foam::meshless::ghostBoundary::interpolateImpl
             const Eigen::Map<const vectorD<Dim>> nv(nrm + size_t(s)*Dim);
             Eigen::Map<vectorD<Dim>>(Uv + size_t(s)*Dim) =
                 uTilde - 2*uTilde.dot(nv)*nv + 2*uw.dot(nv)*nv;
-            Eigen::Map<vectorD<Dim>>(Uc + size_t(s)*Dim) =
-                uTilde - uTilde.dot(nv)*nv + uw.dot(nv)*nv;
         }
 
         Eigen::Map<tensorD<Dim>>(S + size_t(s)*Dim*Dim) = -ps*inv;
