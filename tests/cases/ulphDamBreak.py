@@ -26,8 +26,34 @@ from readClouds import read_clouds  # noqa: E402
 TUTORIAL = os.path.join(project_dir, "tutorials/ulphPdFoam/damBreak")
 
 
+def check_fill_front(t):
+    """validate.py's water-fraction front on a block of 40 x 10 particles at
+    (i + 1/2, j + 1/2) dx: the block's edge (40 dx, to the dx/4 sampling),
+    unmoved by a lone particle 3 dx ahead; a tongue one particle thick
+    (water fraction dx / (sqrt(pi) h) = 0.47 at most) does not count, one
+    three particles thick does to its edge"""
+    sys.path.insert(0, os.path.join(TUTORIAL, "validation"))
+    from validate import fill_front
+    dx = 0.001
+    block = [((i + 0.5) * dx, (j + 0.5) * dx, 0.0)
+             for i in range(40) for j in range(10)]
+    edge = fill_front(block, dx, 1.2, 3.0)
+    t.check("water fraction 0.5 at the block's edge (%.3f dx, 40 dx)"
+            % (edge / dx), abs(edge / dx - 40.0) <= 0.25)
+    lone = fill_front(block + [(43.5 * dx, 0.5 * dx, 0.0)], dx, 1.2, 3.0)
+    t.check("a lone particle 3 dx ahead does not move it (%.3f dx)"
+            % (lone / dx), abs(lone - edge) < 1e-12)
+    for rows, low, high in ((1, 40.0, 42.0), (3, 59.5, 60.25)):
+        sheet = block + [((i + 0.5) * dx, (j + 0.5) * dx, 0.0)
+                         for i in range(40, 60) for j in range(rows)]
+        tip = fill_front(sheet, dx, 1.2, 3.0) / dx
+        t.check("a tongue of %d row(s) to 60 dx: front %.3f dx in [%g, %g]"
+                % (rows, tip, low, high), low <= tip <= high)
+
+
 def main():
     t = CaseTest("ulphDamBreak")
+    check_fill_front(t)
     work = scratch("ulphDamBreak")
     try:
         case = copy_case(TUTORIAL, os.path.join(work, "damBreak"))
