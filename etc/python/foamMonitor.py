@@ -90,14 +90,19 @@ def wall_time(cost):
 def body_cost(case, body, walls=None, solver="ulphPdFoam"):
     """run_cost of the case's log.<solver> (a run and its restarts add up)
     with, from the scene summary at its start, the body's particle count
-    (key: the body's name) and spacing ("dx"), and the particle count of a
+    (key: the body's name), spacing ("dx") and kernel's smoothing length
+    ("h", nan for a body without a kernel), and the particle count of a
     walls body ("walls") when one is named"""
     log_file = os.path.join(case, "log." + solver)
     cost = run_cost(log_file)
     log = open(log_file).read()
-    line = re.search(r"%s: (\d+) particles, spacing ([0-9.e-]+)" % body, log)
+    line = re.search(r"%s: (\d+) particles, spacing ([0-9.e-]+)(.*)" % body,
+                     log)
     cost[body] = int(line.group(1)) if line else 0
     cost["dx"] = float(line.group(2)) if line else float("nan")
+    h = re.search(r"kernel \w+ \(h ([0-9.e-]+)\)", line.group(3)) \
+        if line else None
+    cost["h"] = float(h.group(1)) if h else float("nan")
     if walls:
         nwall = re.search(r"%s: (\d+) particles" % walls, log)
         cost["walls"] = int(nwall.group(1)) if nwall else 0

@@ -50,15 +50,6 @@ def reference():
     return out
 
 
-def kernel_shape(case):
-    """smoothingLengthRatio and horizon (in h) of the case's kernel"""
-    props = open(os.path.join(case, "constant", "particleProperties")).read()
-    ratio = re.search(r"smoothingLengthRatio\s+([0-9.eE+-]+)", props)
-    horizon = re.search(r"\n\s*horizon\s+([0-9.eE+-]+)", props)
-    return (float(ratio.group(1)) if ratio else 1.2,
-            float(horizon.group(1)) if horizon else 3.0)
-
-
 def fill_front(x, dx, ratio, horizon):
     """Largest x [m] where the water fraction sum_j dx^2 W(x - x_j, h) of
     the 2D Gaussian kernel reaches 0.5 anywhere across the depth, sampled
@@ -81,13 +72,15 @@ def fill_front(x, dx, ratio, horizon):
     return gx[filled].max() if filled.any() else lead
 
 
-def front_history(case, dx):
-    """Front x/H against T (largest particle x and water fraction 0.5), the
-    particle count, and the deepest penetration of any particle beyond the
-    tank's walls at any written time [m]"""
+def front_history(case, cost):
+    """Front x/H against T (largest particle x and water fraction 0.5 with
+    the kernel of case_cost), the particle count, and the deepest
+    penetration of any particle beyond the tank's walls at any written
+    time [m]"""
     T, X, F = [], [], []
     depth = 0.0
-    shape = kernel_shape(case)
+    dx = cost["dx"]
+    shape = (cost["h"] / dx, cost["horizon"])
     for t, name in times(case):
         x = read_positions(case, name, "water")
         T.append(t * math.sqrt(G / H))
@@ -107,12 +100,15 @@ def interpolate(T, X, t):
 
 
 def case_cost(case):
-    """foamMonitor's body_cost of the water (with the walls) and the
+    """foamMonitor's body_cost of the water (with the walls and its kernel's
+    h), the kernel's horizon (in h; the Gaussian's default 3), the
     artificial viscosity's alpha and the water's minPressure"""
     props = open(os.path.join(case, "constant", "particleProperties")).read()
     alpha = re.search(r"artificialViscosity\s*\{\s*alpha\s+([0-9.eE+-]+)",
                       props)
     cost = body_cost(case, "water", walls="walls")
+    horizon = re.search(r"\n\s*horizon\s+([0-9.eE+-]+)", props)
+    cost["horizon"] = float(horizon.group(1)) if horizon else 3.0
     cost["alpha"] = alpha.group(1) if alpha else "none"
     pmin = re.search(r"\n\s*minPressure\s+([0-9.eE+-]+)", props)
     cost["minPressure"] = ("minPressure %s Pa" % pmin.group(1) if pmin
@@ -145,7 +141,7 @@ def plot(T, X, F, ref, path):
 def main(case, check):
     ref = reference()
     cost = case_cost(case)
-    T, X, F, n, depth = front_history(case, cost["dx"])
+    T, X, F, n, depth = front_history(case, cost)
     errors = []
     for t, x in ref:
         xs = interpolate(T, X, t)
