@@ -5,10 +5,13 @@ validation scripts and tests (ParaView's reader converts to float32).
     from foamCloud import times, read_cloud
 
 read_cloud(case, time, body) returns {"id": [...], "positions": [[x,y,z],..],
-<field>: [...]} for the ascii files of <case>/<time>/lagrangian/<body>/.
+<field>: [...]} for the files of <case>/<time>/lagrangian/<body>/, ascii or
+binary (writeFormat binary: the arch of the file's header gives the sizes
+of labels and scalars).
 """
 import os
 import re
+import struct
 
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 
@@ -32,11 +35,47 @@ def _body(text):
     return text[end:]
 
 
+_COMPONENTS = {"scalarField": 1, "labelField": 1, "vectorField": 3,
+               "symmTensorField": 6, "tensorField": 9}
+
+
+def _read_binary(path, raw):
+    """A binary list file (IOField of labels, scalars or vectors): the
+    count, '(' and the packed values"""
+    head = raw[:raw.index(b"}", raw.index(b"FoamFile")) + 1].decode()
+    cls = re.search(r"class\s+(\w+);", head).group(1)
+    if cls not in _COMPONENTS:
+        raise ValueError("%s: binary %s not supported" % (path, cls))
+    arch = re.search(r'arch\s+"([^"]*)"', head)
+    arch = arch.group(1) if arch else "LSB;label=32;scalar=64"
+    order = "<" if arch.startswith("LSB") else ">"
+    bits = dict(re.findall(r"(label|scalar)=(\d+)", arch))
+    if cls == "labelField":
+        code = {"32": "i", "64": "q"}[bits.get("label", "32")]
+    else:
+        code = {"32": "f", "64": "d"}[bits.get("scalar", "64")]
+    # the count starts the first line after the header's comment lines;
+    # N{value} is a uniform list
+    m = re.compile(rb"\n\s*(\d+)\s*([({])").search(raw, len(head))
+    n, k = int(m.group(1)), _COMPONENTS[cls]
+    if m.group(2) == b"{":
+        one = struct.unpack_from(order + code * k, raw, m.end())
+        values = one * n
+    else:
+        values = struct.unpack_from(order + code * (n * k), raw, m.end())
+    if k == 1:
+        return list(values)
+    return [list(values[i * k:(i + 1) * k]) for i in range(n)]
+
+
 def read_list(path):
-    """An ascii list file: scalars, labels, or vectors/tensors as lists.
-    Handles the uniform form N{value}. Positions lines '(x y z) celli' give
-    [x, y, z]."""
-    text = _body(open(path).read())
+    """A list file: scalars, labels, or vectors/tensors as lists, ascii or
+    binary. Handles the uniform form N{value}. Positions lines
+    '(x y z) celli' give [x, y, z]."""
+    raw = open(path, "rb").read()
+    if re.search(rb"format\s+binary\s*;", raw[:2000]):
+        return _read_binary(path, raw)
+    text = _body(raw.decode())
     text = re.sub(r"//.*", "", text)
     m = re.match(r"\s*(\d+)\s*\{\s*(\([^()]*\)|" + _NUMBER + r")\s*\}", text)
     if m:      # uniform list N{value}
@@ -60,7 +99,7 @@ def read_list(path):
 
 
 def read_cloud(case, time, body):
-    """Every ascii file of a cloud, by name."""
+    """Every file of a cloud, by name."""
     d = os.path.join(case, time, "lagrangian", body)
     out = {}
     for name in sorted(os.listdir(d)):
