@@ -14,12 +14,21 @@ alpha = 0.5 contour of a VOF solution). It lies half a spacing beyond the
 last particle of a flat edge, ignores particles detached from the tongue
 (a lone particle fills 1/(pi 1.44) = 0.22 of its own place) and falls
 behind the last particle where the tongue is thinner than about 2h.
-Also checks that no particle has left the tank: the deepest penetration
-beyond the walls (x < 0, x > 4H, y < 0) must stay below half a spacing.
+The run goes on through the impact on the far wall; over all its written
+times it checks that it reached endTime, that no particle has left the tank
+(the deepest penetration beyond the walls, x < 0, x > 4H, y < 0, below half
+a spacing) or been lost, and that the total energy of the water (kinetic +
+potential, the energy monitor) never rises above its lowest earlier value
+by more than 0.5 % of the column's potential energy rho0 g H^3/2: the
+artificial viscosity only dissipates; what the monitor leaves out (the
+compression energy of the Tait law, the wall repulsion's potential) is
+exchanged back and forth, and a particle thrown out would show as a rise.
+It also draws the pressure at t = 0.1, 0.2, ... s (as the paper's Fig. 8).
 
 Writes validation/result.md (the paper's spacing, 1 mm) or
-validation/result-dx<spacing>.md with the error, the run's cost (particles,
-steps, wall time from log.ulphPdFoam) and the plot front[-dx<spacing>].png.
+validation/result-dx<spacing>.md with the error, the checks, the run's cost
+(particles, steps, wall time from log.ulphPdFoam) and the plots
+front[-dx<spacing>].png and pressure[-dx<spacing>].png.
 With --check, exits 1 when a target is missed (for benchmark suites).
 
 Usage: validate.py <case> [--check]
@@ -33,12 +42,16 @@ here = os.path.dirname(os.path.abspath(__file__))
 project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
-from foamCloud import read_positions, times  # noqa: E402
+from foamCloud import read_cloud, read_positions, times  # noqa: E402
 from foamMonitor import body_cost, wall_time  # noqa: E402
+from fsiChecks import end_time, energy_total  # noqa: E402
 
 H = 0.057
 G = 9.81
+RHO0 = 1000.0
 TARGET = 0.05
+ENERGY_RISE = 0.005     # of the column's potential energy rho0 g H^3/2
+FRONT_END = 2.8         # T: the front's history ends after the impact
 
 
 def reference():
@@ -73,22 +86,37 @@ def fill_front(x, dx, ratio, horizon):
 
 
 def front_history(case, cost):
-    """Front x/H against T (largest particle x and water fraction 0.5 with
-    the kernel of case_cost), the particle count, and the deepest
-    penetration of any particle beyond the tank's walls at any written
-    time [m]"""
-    T, X, F = [], [], []
+    """Front x/H against T up to FRONT_END (largest particle x and water
+    fraction 0.5 with the kernel of case_cost); over all written times the
+    particle counts and the deepest penetration of any particle beyond the
+    tank's walls [m]"""
+    T, X, F, counts = [], [], [], []
     depth = 0.0
     dx = cost["dx"]
     shape = (cost["h"] / dx, cost["horizon"])
     for t, name in times(case):
         x = read_positions(case, name, "water")
-        T.append(t * math.sqrt(G / H))
-        X.append(max(p[0] for p in x) / H)
-        F.append(fill_front(x, dx, *shape) / H)
+        counts.append(len(x))
         for p in x:
             depth = max(depth, -p[0], p[0] - 4 * H, -p[1])
-    return T, X, F, len(x), depth
+        if t * math.sqrt(G / H) <= FRONT_END:
+            T.append(t * math.sqrt(G / H))
+            X.append(max(p[0] for p in x) / H)
+            F.append(fill_front(x, dx, *shape) / H)
+    return T, X, F, counts, depth
+
+
+def energy_rise(case):
+    """Largest rise of the energy monitor's total above its lowest earlier
+    value [J/m]; None without the monitor"""
+    if not os.path.isdir(os.path.join(case, "postProcessing", "energy")):
+        return None
+    total = energy_total(case)
+    low, rise = math.inf, 0.0
+    for e in total:
+        low = min(low, e)
+        rise = max(rise, e - low)
+    return rise
 
 
 def interpolate(T, X, t):
@@ -138,10 +166,50 @@ def plot(T, X, F, ref, path):
     fig.savefig(path, dpi=120)
 
 
+def plot_pressure(case, cost, path):
+    """The water's particles coloured by p/(rho0 g H) at every written
+    multiple of 0.1 s"""
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        return
+    shots = [(t, name) for t, name in times(case)
+             if t > 0 and abs(t / 0.1 - round(t / 0.1)) < 1e-6]
+    if not shots:
+        return
+    clouds = [(t, read_cloud(case, name, "water")) for t, name in shots]
+    top = max(q[1] for _, c in clouds for q in c["positions"]) / H
+    top = min(2.0, 0.5 * math.ceil(top / 0.5 + 0.01))
+    cols = 2
+    rows = (len(shots) + cols - 1) // cols
+    fig, axes = plt.subplots(rows, cols, squeeze=False,
+                             figsize=(5.5 * cols, (1.1 * top + 0.5) * rows))
+    size = (72 * 5.5 * 0.8 / (4 * H / cost["dx"])) ** 2
+    for ax, (t, cloud) in zip(axes.flat, clouds):
+        x = cloud["positions"]
+        sc = ax.scatter([q[0] / H for q in x], [q[1] / H for q in x],
+                        c=[v / (RHO0 * G * H) for v in cloud["p"]],
+                        s=size, vmin=0, vmax=1.2, cmap="viridis",
+                        linewidths=0)
+        ax.plot([0, 0, 4, 4], [top, 0, 0, top], "k-", lw=1)
+        ax.set_xlim(-0.05, 4.05)
+        ax.set_ylim(-0.05, top)
+        ax.set_aspect("equal")
+        ax.set_title("t = %.1f s (T = %.2f)" % (t, t * math.sqrt(G / H)),
+                     fontsize=9)
+        ax.tick_params(labelsize=7)
+    for ax in list(axes.flat)[len(shots):]:
+        ax.axis("off")
+    fig.colorbar(sc, ax=axes, shrink=0.8, label=r"$p/(\rho_0 g H)$")
+    fig.savefig(path, dpi=110)
+
+
 def main(case, check):
     ref = reference()
     cost = case_cost(case)
-    T, X, F, n, depth = front_history(case, cost)
+    T, X, F, counts, depth = front_history(case, cost)
     errors = []
     for t, x in ref:
         xs = interpolate(T, X, t)
@@ -150,34 +218,62 @@ def main(case, check):
             errors.append((t, x, xs, xs - x, xf, xf - x))
     rms = math.sqrt(sum(e[3] ** 2 for e in errors) / len(errors))
     rms_fill = math.sqrt(sum(e[5] ** 2 for e in errors) / len(errors))
-    contained = depth < 0.5 * cost["dx"]
-    ok = len(errors) == len(ref) and rms < TARGET and contained
-    paper = abs(cost["dx"] - 0.001) < 1e-9
-    suffix = "" if paper else "-dx%g" % cost["dx"]
+    dx = cost["dx"]
+    series = times(case)
+    t_end, t_last = end_time(case), series[-1][0]
+    energy_scale = RHO0 * G * H ** 3 / 2
+    rise = energy_rise(case)
+    rise = math.inf if rise is None else rise / energy_scale
+    checks = [
+        ("ran to endTime %g s (last written time %g s)" % (t_end, t_last),
+         abs(t_last - t_end) < 1e-9),
+        ("the water keeps its %d particles at all %d written times"
+         % (counts[0], len(counts)), min(counts) == max(counts)),
+        ("deepest wall penetration at any written time %.2f dx < 0.5 dx"
+         % (depth / dx), depth < 0.5 * dx),
+        ("total energy (kinetic + potential) never rises above its lowest "
+         "earlier value by more than %.1f %% of rho0 g H^3/2 = %.3f J/m "
+         "(largest rise %s)" % (100 * ENERGY_RISE, energy_scale,
+                                "%.3f %%" % (100 * rise) if rise < math.inf
+                                else "unknown: no energy monitor in the"
+                                " case's particleProperties"),
+         rise < ENERGY_RISE),
+    ]
+    stable = all(good for _, good in checks)
+    ok = len(errors) == len(ref) and rms < TARGET and stable
+    paper = abs(dx - 0.001) < 1e-9
+    suffix = "" if paper else "-dx%g" % dx
 
     lines = [
-        "# Dam break: surge front vs Martin & Moyce (1952)",
+        "# Dam break: surge front vs Martin & Moyce (1952), and through "
+        "the impact",
         "",
         "Command: `tutorials/ulphPdFoam/damBreak/Allrun%s`"
-        % ("" if abs(cost["dx"] - 0.001) < 1e-9 else " -dx %g" % cost["dx"]),
+        % ("" if paper else " -dx %g" % dx),
         "",
-        "| spacing | water particles | wall particles | steps | wall time | "
-        "particle-steps/s | RMS front error (target < %.2f H) | "
-        "deepest wall penetration (target < dx/2) |" % TARGET,
-        "|---|---|---|---|---|---|---|---|",
-        "| %g m (H/dx = %.0f) | %d | %d | %d | %s | %.3g | %.4f H: %s | "
-        "%.2f dx: %s |"
-        % (cost["dx"], H / cost["dx"], n, cost["walls"], cost["steps"],
+        "| spacing | water particles | wall particles | steps to %g s | "
+        "wall time | particle-steps/s | RMS front error (target < %.2f H) |"
+        % (t_last, TARGET),
+        "|---|---|---|---|---|---|---|",
+        "| %g m (H/dx = %.0f) | %d | %d | %d | %s | %.3g | %.4f H: %s |"
+        % (dx, H / dx, counts[-1], cost["walls"], cost["steps"],
            wall_time(cost), cost["rate"], rms,
-           "met" if rms < TARGET else "MISSED", depth / cost["dx"],
-           "met" if contained else "MISSED"),
+           "met" if rms < TARGET else "MISSED"),
         "",
         "Set-up: ULPH-NOSBPD paper 4.2, Table 2 (L = H = 0.057 m, tank 4H, "
         "c0 = 40 m/s, Gaussian kernel h = 1.2 dx, horizon 3h, density "
         "filter every 20 steps), artificial viscosity alpha = %s (paper: "
-        "0.02), %s, no-slip ghost walls of 4 layers, hydrostatic "
-        "start, adaptive step maxCo 0.25." % (cost["alpha"],
-                                              cost["minPressure"]),
+        "0.02), %s, no-slip ghost walls of 4 layers with wall repulsion, "
+        "hydrostatic start, adaptive step maxCo 0.25." % (cost["alpha"],
+                                                         cost["minPressure"]),
+        "",
+        "Stability through the impact on the far wall (T = 2.56), the "
+        "run-up and the plunging wave:",
+        "",
+    ]
+    lines += ["- %s: %s" % (what, "met" if good else "MISSED")
+              for what, good in checks]
+    lines += [
         "",
         "Front at water fraction 0.5 (not checked, see validate.py): RMS "
         "%.4f H." % rms_fill,
@@ -189,16 +285,19 @@ def main(case, check):
     for t, x, xs, e, xf, ef in errors:
         lines.append("| %.3f | %.3f | %.3f | %+.3f | %.3f | %+.3f |"
                      % (t, x, xs, e, xf, ef))
-    lines += ["", "Plot: front%s.png. Reference figures: martinMoyce1952.dat."
-              % suffix]
+    lines += ["", "Plots: front%s.png, pressure%s.png (p/(rho0 g H) every "
+              "0.1 s). Reference figures: martinMoyce1952.dat."
+              % (suffix, suffix)]
     open(os.path.join(here, "result%s.md" % suffix), "w").write(
         "\n".join(lines) + "\n")
     plot(T, X, F, ref, os.path.join(here, "front%s.png" % suffix))
+    plot_pressure(case, cost, os.path.join(here, "pressure%s.png" % suffix))
 
     print("\n".join(lines))
     print("dam break front: RMS error %.4f H (target < %.2f H), deepest"
-          " penetration %.2f dx: %s"
-          % (rms, TARGET, depth / cost["dx"], "PASS" if ok else "FAIL"))
+          " penetration %.2f dx, energy rise %.3f %%, stability checks %s:"
+          " %s" % (rms, TARGET, depth / dx, 100 * rise,
+                   "met" if stable else "MISSED", "PASS" if ok else "FAIL"))
     return 0 if ok or not check else 1
 
 
