@@ -55,14 +55,17 @@ def _read_binary(path, raw):
     else:
         code = {"32": "f", "64": "d"}[bits.get("scalar", "64")]
     # the count starts the first line after the header's comment lines;
-    # N{value} is a uniform list
-    m = re.compile(rb"\n\s*(\d+)\s*([({])").search(raw, len(head))
+    # binary lists are always N(bytes) (OpenFOAM writes N{value} only in
+    # ascii), an empty one just 0
+    m = re.compile(rb"\n\s*(\d+)\s*(\(|\n|$)").search(raw, len(head))
+    if m is None:
+        raise ValueError("no list in " + path)
     n, k = int(m.group(1)), _COMPONENTS[cls]
-    if m.group(2) == b"{":
-        one = struct.unpack_from(order + code * k, raw, m.end())
-        values = one * n
-    else:
-        values = struct.unpack_from(order + code * (n * k), raw, m.end())
+    if n == 0:
+        return []
+    if m.group(2) != b"(":
+        raise ValueError("%s: expected '(' after the count %d" % (path, n))
+    values = struct.unpack_from(order + code * (n * k), raw, m.end())
     if k == 1:
         return list(values)
     return [list(values[i * k:(i + 1) * k]) for i in range(n)]
