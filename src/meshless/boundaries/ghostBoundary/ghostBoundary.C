@@ -66,13 +66,6 @@ Foam::meshless::ghostBoundary::ghostBoundary
             prefixed(prefix, "Uvisc"), particleField::kind::vector
         )
     ),
-    Ucont_
-    (
-        body.particles().addScratchField
-        (
-            prefixed(prefix, "Ucont"), particleField::kind::vector
-        )
-    ),
     Minv_
     (
         body.particles().addScratchField
@@ -177,7 +170,6 @@ void Foam::meshless::ghostBoundary::interpolateImpl
     const double* V0 = V0_.data();
     const double* Uw = Uown_.data();
     double* Uv = Uvisc_.data();
-    double* Uc = Ucont_.data();
     const double* nrm = normals();
     double* S = S_.data();
     double* Minv = Minv_.data();
@@ -231,9 +223,6 @@ void Foam::meshless::ghostBoundary::interpolateImpl
         m[s] = rho[s]*V0[s];
 
         const Eigen::Map<const vectorD<Dim>> uw(Uw + size_t(s)*Dim);
-        // Continuity sees the wall's own velocity; next to a free-slip
-        // wall the fluid reads only its normal part (slipNormals())
-        Eigen::Map<vectorD<Dim>>(Uc + size_t(s)*Dim) = uw;
         if (noSlip)
         {
             Eigen::Map<vectorD<Dim>>(Uv + size_t(s)*Dim) = 2*uw - uTilde;

@@ -366,7 +366,9 @@ void Foam::meshless::bodyModels::ulph::setContext()
         ctx_.Usrc[k + 1] = walls_[k]->Uvisc();
         ctx_.massSrc[k + 1] = walls_[k]->mass();
         Ssrc_[k + 1] = walls_[k]->S();
-        Ucont_[k + 1] = walls_[k]->Ucont();
+        // Continuity sees the ghosts' own velocity; next to a free-slip
+        // wall only its normal part (slipNormal_)
+        Ucont_[k + 1] = walls_[k]->U();
         slipNormal_[k + 1] = walls_[k]->slipNormals();
         // A wall of the fluid's 'walls', not a coupled body's ghosts
         ctx_.wallSource[k + 1] =
