@@ -112,7 +112,12 @@ def read_cloud(case, time, body):
     return out
 
 
+def read_field(case, time, body, name):
+    """One field of a cloud (read_list of its file)."""
+    return read_list(os.path.join(case, time, "lagrangian", body, name))
+
+
 def read_positions(case, time, body):
     """Positions of a cloud ([x, y, z] each): always ascii, whatever the
     case's writeFormat."""
-    return read_list(os.path.join(case, time, "lagrangian", body, "positions"))
+    return read_field(case, time, body, "positions")

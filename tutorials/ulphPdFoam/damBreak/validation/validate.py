@@ -45,7 +45,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
-from foamCloud import read_cloud, read_positions, times  # noqa: E402
+from foamCloud import read_field, read_positions, times  # noqa: E402
 from foamMonitor import body_cost, wall_time  # noqa: E402
 from fsiChecks import end_time, energy_total  # noqa: E402
 
@@ -185,8 +185,9 @@ def plot_pressure(case, cost, path):
              if t > 0 and abs(t / 0.1 - round(t / 0.1)) < 1e-6]
     if not shots:
         return
-    clouds = [(t, read_cloud(case, name, "water")) for t, name in shots]
-    top = max(q[1] for _, c in clouds for q in c["positions"]) / H
+    clouds = [(t, read_positions(case, name, "water"),
+               read_field(case, name, "water", "p")) for t, name in shots]
+    top = max(q[1] for _, x, _ in clouds for q in x) / H
     # up to the highest particle, at most 2H (a higher splash is cut off)
     top = min(2.0, 0.5 * math.ceil(top / 0.5 + 0.01))
     cols = 2
@@ -196,10 +197,9 @@ def plot_pressure(case, cost, path):
     # a marker one spacing wide, in points^2 (the tank spans about 0.8 of
     # the panel's 5.5 inches)
     size = (72 * 5.5 * 0.8 / (4 * H / cost["dx"])) ** 2
-    for ax, (t, cloud) in zip(axes.flat, clouds):
-        x = cloud["positions"]
+    for ax, (t, x, p) in zip(axes.flat, clouds):
         sc = ax.scatter([q[0] / H for q in x], [q[1] / H for q in x],
-                        c=[v / (RHO0 * G * H) for v in cloud["p"]],
+                        c=[v / (RHO0 * G * H) for v in p],
                         s=size, vmin=0, vmax=1.2, cmap="viridis",
                         linewidths=0)
         ax.plot([0, 0, 4, 4], [top, 0, 0, top], "k-", lw=1)
