@@ -1,0 +1,150 @@
+#!/usr/bin/env python3
+"""Collects the VOF dam-break fronts (front-n*.dat beside this script) into
+result.md and front.png: each against the experiment of Martin and Moyce
+(1952) (the damBreak tutorial's validation/martinMoyce1952.dat), and the
+change between successive resolutions. The finest front without a -sigma
+or -nu suffix goes to the tutorial as validation/interFoamFront.dat, the
+Navier-Stokes reference its validate.py reports the ULPH front against.
+"""
+import glob
+import math
+import os
+import re
+
+here = os.path.dirname(os.path.abspath(__file__))
+tutorial = os.path.join(here, "..", "..", "tutorials", "ulphPdFoam",
+                        "damBreak", "validation")
+T_SPEED = (1.44, 2.40)     # front speed over the experiment's straight part
+
+
+def table(path):
+    rows, head = [], []
+    for line in open(path):
+        if line.startswith("#"):
+            head.append(line[1:].strip())
+        elif line.strip():
+            rows.append(tuple(float(v) for v in line.split()[:2]))
+    return head, rows
+
+
+def at(rows, T):
+    for (t0, x0), (t1, x1) in zip(rows, rows[1:]):
+        if t0 <= T <= t1:
+            return x0 + (x1 - x0)*(T - t0)/(t1 - t0)
+    return float("nan")
+
+
+def rms(rows, ref):
+    d = [at(rows, T) - X for T, X in ref]
+    return math.sqrt(sum(v*v for v in d)/len(d))
+
+
+def key(path):
+    """(variant, n) of front-n<n>[-sigma<s>][-nu<nu>].dat: variant is the
+    suffix after n ("" for the default fluid)"""
+    m = re.match(r"front-n(\d+)(.*)\.dat$", os.path.basename(path))
+    return (m.group(2), int(m.group(1)))
+
+
+def variant(suffix):
+    """sigma [N/m] and water's nu [m^2/s] of a variant suffix"""
+    sigma = re.search(r"-sigma([^-]+(?:e-\d+)?)", suffix)
+    nu = re.search(r"-nu([0-9.]+(?:e-?\d+)?)", suffix)
+    return (sigma.group(1) if sigma else "0.072",
+            nu.group(1) if nu else "1e-6")
+
+
+def main():
+    _, ref = table(os.path.join(tutorial, "martinMoyce1952.dat"))
+    files = sorted(glob.glob(os.path.join(here, "front-n*.dat")), key=key)
+    runs = []
+    for f in files:
+        head, rows = table(f)
+        sigma, n = key(f)
+        runs.append((sigma, n, head[0], rows))
+
+    out = ["# Dam break by interFoam (VOF): the Navier-Stokes front", "",
+           "Command: `benchmarks/damBreakVof/Allrun -n <cells per H> "
+           "[-np <processes>] [-sigma <N/m>] [-nu <m^2/s>]`, one line per "
+           "run (front-n*.dat).",
+           "Square column H = 0.057 m, tank 4H x 2H open at the top, water and "
+           "air (nu 1e-6 and 1.5e-5 m^2/s), no-slip walls, laminar, "
+           "surface tension 0.072 N/m, unless stated; maxCo 0.25. "
+           "Front: foremost point of the alpha = 0.5 contour, every 2.5 ms.",
+           "",
+           "| cells per H | sigma [N/m] | water nu [m^2/s] | run | RMS vs experiment | "
+           "speed T = %.2f-%.2f [sqrt(gH)] | " % T_SPEED
+           + " | ".join("x/H at T = %.2f" % T for T, _ in ref[1::4]) + " |",
+           "|---|---|---|---|---|---|" + "---|"*len(ref[1::4])]
+    speeds = []
+    for sigma, n, head, rows in runs:
+        speed = (at(rows, T_SPEED[1]) - at(rows, T_SPEED[0])) \
+            / (T_SPEED[1] - T_SPEED[0])
+        cost = head.split(": ", 1)[1] if ": " in head else head
+        out.append("| %d | %s | %s | %s | %.4f H | %.3f | " % (
+            (n,) + variant(sigma) + (cost, rms(rows, ref), speed))
+            + " | ".join("%.3f" % at(rows, T) for T, _ in ref[1::4]) + " |")
+        speeds.append(speed)
+    exp_speed = (at(ref, T_SPEED[1]) - at(ref, T_SPEED[0])) \
+        / (T_SPEED[1] - T_SPEED[0])
+    out.append("| experiment | | | | | %.3f | " % exp_speed
+               + " | ".join("%.3f" % X for _, X in ref[1::4]) + " |")
+
+    # Change between successive resolutions (same sigma)
+    out += ["", "Largest change of the front between successive resolutions "
+            "at the experiment's times:", ""]
+    for (s0, n0, _, r0), (s1, n1, _, r1) in zip(runs, runs[1:]):
+        if s0 == s1:
+            d = max(abs(at(r1, T) - at(r0, T)) for T, _ in ref)
+            out.append("- n = %d to %d%s: %.3f H" % (
+                n0, n1, " (sigma %s, nu %s)" % variant(s0) if s0 else "",
+                d))
+
+    default = [r for r in runs if not r[0]]
+    if default:
+        sigma, n, head, rows = default[-1]
+        with open(os.path.join(tutorial, "interFoamFront.dat"), "w") as f:
+            f.write("# Surge front of the square column by interFoam (VOF), "
+                    "n = %d cells per H\n" % n)
+            f.write("# Written by benchmarks/damBreakVof/Allrun (result.py): "
+                    "%s\n" % head)
+            f.write("# Foremost point of the alpha.water = 0.5 contour\n")
+            f.write("# T = t sqrt(g/H)   x_front/H\n")
+            for T, X in rows:
+                f.write("%.5f %.5f\n" % (T, X))
+        out += ["", "Reference for the tutorial: n = %d written to "
+                "tutorials/ulphPdFoam/damBreak/validation/interFoamFront.dat."
+                % n]
+
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(figsize=(6, 4.5))
+        for sigma, n, _, rows in runs:
+            ax.plot([r[0] for r in rows], [r[1] for r in rows],
+                    "--" if sigma else "-",
+                    label="interFoam n = %d%s" % (
+                        n, ", sigma %s, nu %s" % variant(sigma)
+                        if sigma else ""))
+        ax.plot([r[0] for r in ref], [r[1] for r in ref], "ko",
+                label="Martin & Moyce (1952)")
+        ax.set_xlabel("T = t sqrt(g/H)")
+        ax.set_ylabel("x/H")
+        ax.set_xlim(0, 2.7)
+        ax.set_ylim(1, 4.05)
+        ax.legend()
+        ax.grid(alpha=0.3)
+        fig.tight_layout()
+        fig.savefig(os.path.join(here, "front.png"), dpi=100)
+        out += ["", "Plot: front.png."]
+    except ImportError:
+        out += ["", "(matplotlib missing: no plot)"]
+
+    text = "\n".join(out) + "\n"
+    open(os.path.join(here, "result.md"), "w").write(text)
+    print(text)
+
+
+if __name__ == "__main__":
+    main()
