@@ -2,9 +2,11 @@
 """Collects the VOF dam-break fronts (front-n*.dat beside this script) into
 result.md and front.png: each against the experiment of Martin and Moyce
 (1952) (the damBreak tutorial's validation/martinMoyce1952.dat), and the
-change between successive resolutions. The finest front without a -sigma
-or -nu suffix goes to the tutorial as validation/interFoamFront.dat, the
-Navier-Stokes reference its validate.py reports the ULPH front against.
+change between successive resolutions. The finest default front goes to
+the tutorial as validation/interFoamFront.dat, the finest one with -sigma 0
+alone (the equations the ULPH solver solves) as
+interFoamFrontNoSurfaceTension.dat: the Navier-Stokes references its
+validate.py reports the ULPH front against.
 """
 import glob
 import math
@@ -15,6 +17,11 @@ here = os.path.dirname(os.path.abspath(__file__))
 tutorial = os.path.join(here, "..", "..", "tutorials", "ulphPdFoam",
                         "damBreak", "validation")
 T_SPEED = (1.44, 2.40)     # front speed over the experiment's straight part
+# The finest run of these variants goes to the tutorial's validation/
+TUTORIAL_FRONTS = [
+    ("", "interFoamFront.dat", "water's surface tension"),
+    ("-sigma0", "interFoamFrontNoSurfaceTension.dat", "no surface tension"),
+]
 
 
 def table(path):
@@ -100,21 +107,23 @@ def main():
                 n0, n1, " (sigma %s, nu %s)" % variant(s0) if s0 else "",
                 d))
 
-    default = [r for r in runs if not r[0]]
-    if default:
-        sigma, n, head, rows = default[-1]
-        with open(os.path.join(tutorial, "interFoamFront.dat"), "w") as f:
+    for suffix, name, what in TUTORIAL_FRONTS:
+        finest = [r for r in runs if r[0] == suffix]
+        if not finest:
+            continue
+        _, n, head, rows = finest[-1]
+        with open(os.path.join(tutorial, name), "w") as f:
             f.write("# Surge front of the square column by interFoam (VOF), "
-                    "n = %d cells per H\n" % n)
+                    "%s, n = %d cells per H\n" % (what, n))
             f.write("# Written by benchmarks/damBreakVof/Allrun (result.py): "
                     "%s\n" % head)
             f.write("# Foremost point of the alpha.water = 0.5 contour\n")
             f.write("# T = t sqrt(g/H)   x_front/H\n")
             for T, X in rows:
                 f.write("%.5f %.5f\n" % (T, X))
-        out += ["", "Reference for the tutorial: n = %d written to "
-                "tutorials/ulphPdFoam/damBreak/validation/interFoamFront.dat."
-                % n]
+        out += ["", "Reference for the tutorial (%s): n = %d written to "
+                "tutorials/ulphPdFoam/damBreak/validation/%s." % (what, n,
+                                                                 name)]
 
     try:
         import matplotlib
