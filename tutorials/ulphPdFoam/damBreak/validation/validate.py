@@ -27,6 +27,12 @@ show as a rise. That the run reached endTime with all its particles is
 checked too, for validate.py run on its own: Allrun stops before it when
 the solver fails, and the solver stops rather than lose a particle.
 It also draws the pressure at t = 0.1, 0.2, ... s (as the paper's Fig. 8).
+With the converged Navier-Stokes fronts of the same column by OpenFOAM's
+interFoam (benchmarks/damBreakVof) in validation/ it reports, not
+checked, the RMS difference of both fronts from each at the experiment's
+times before that front reaches the far wall, and draws them:
+interFoamFrontNoSurfaceTension.dat (the equations ULPH solves) and
+interFoamFront.dat (with water's surface tension).
 
 Writes validation/result.md (the paper's spacing, 1 mm) or
 validation/result-dx<spacing>.md with the error, the checks, the run's cost
@@ -55,13 +61,23 @@ RHO0 = 1000.0
 TARGET = 0.05
 ENERGY_RISE = 0.005     # of the column's potential energy rho0 g H^3/2
 FRONT_END = 2.8         # T: the front's history ends after the impact
+# Navier-Stokes fronts of the same column (benchmarks/damBreakVof): file,
+# what it holds, its line in front.png
+VOF_FRONTS = [
+    ("interFoamFrontNoSurfaceTension.dat",
+     "interFoam without surface tension (the equations ULPH solves)", "--"),
+    ("interFoamFront.dat", "interFoam with water's surface tension", ":"),
+]
 
 
-def reference():
+def reference(name="martinMoyce1952.dat"):
     out = []
-    for line in open(os.path.join(here, "martinMoyce1952.dat")):
+    path = os.path.join(here, name)
+    if not os.path.isfile(path):
+        return out
+    for line in open(path):
         if line.strip() and not line.startswith("#"):
-            T, X = line.split()
+            T, X = line.split()[:2]
             out.append((float(T), float(X)))
     return out
 
@@ -130,6 +146,24 @@ def interpolate(T, X, t):
     return None
 
 
+def against_vof(errors, vof_at):
+    """RMS differences [H] from the Navier-Stokes front (interFoam) at the
+    experiment's times before that front reaches the far wall: of the
+    largest particle x, of the water-fraction front, and of the experiment
+    itself, with the number of times; None without the front"""
+    both = [(e, v) for e, v in zip(errors, vof_at)
+            if v is not None and v < 4.0 - 1e-3]
+    if not both:
+        return None
+
+    def rms_of(d):
+        return math.sqrt(sum(x * x for x in d) / len(d))
+
+    return (rms_of([e[2] - v for e, v in both]),
+            rms_of([e[4] - v for e, v in both]),
+            rms_of([e[1] - v for e, v in both]), len(both))
+
+
 def case_cost(case):
     """foamMonitor's body_cost of the water (with the walls and its kernel's
     h), the kernel's horizon (in h; the Gaussian's default 3), the
@@ -149,7 +183,7 @@ def case_cost(case):
     return cost
 
 
-def plot(T, X, F, ref, path):
+def plot(T, X, F, ref, vofs, path):
     try:
         import matplotlib
         matplotlib.use("Agg")
@@ -162,6 +196,10 @@ def plot(T, X, F, ref, path):
     ax.plot(T, F, "--", label="ulphPdFoam: water fraction 0.5")
     ax.plot([r[0] for r in ref], [r[1] for r in ref], "o",
             label="Martin & Moyce (1952)")
+    for name, what, style, vof in vofs:
+        ax.plot([r[0] for r in vof if r[0] <= max(T)],
+                [r[1] for r in vof if r[0] <= max(T)], style, color="k",
+                lw=1, label=what.replace(" (the equations ULPH solves)", ""))
     ax.set_xlabel(r"$t\sqrt{g/H}$")
     ax.set_ylabel(r"$x_{front}/H$")
     ax.set_xlim(0, max(T))
@@ -227,6 +265,11 @@ def main(case, check):
             errors.append((t, x, xs, xs - x, xf, xf - x))
     rms = math.sqrt(sum(e[3] ** 2 for e in errors) / len(errors))
     rms_fill = math.sqrt(sum(e[5] ** 2 for e in errors) / len(errors))
+    vofs = [(name, what, style, reference(name))
+            for name, what, style in VOF_FRONTS]
+    vofs = [v for v in vofs if v[3]]
+    vof_at = [[interpolate([r[0] for r in vof], [r[1] for r in vof], e[0])
+               for e in errors] for _, _, _, vof in vofs]
     dx = cost["dx"]
     series = times(case)
     t_end, t_last = end_time(case), series[-1][0]
@@ -277,7 +320,7 @@ def main(case, check):
         % (cost["alpha"], cost["minPressure"],
            "with" if cost["repulsion"] else "without"),
         "",
-        "Stability through the impact on the far wall (T = 2.56), the "
+        "Stability through the impact on the far wall (T = 2.45 at 1 mm), the "
         "run-up and the plunging wave:",
         "",
     ]
@@ -287,20 +330,38 @@ def main(case, check):
         "",
         "Front at water fraction 0.5 (not checked, see validate.py): RMS "
         "%.4f H." % rms_fill,
+    ]
+    for (name, what, _, _), at in zip(vofs, vof_at):
+        r = against_vof(errors, at)
+        if r:
+            lines += [
+                "",
+                "Against the Navier-Stokes front of %s (%s, "
+                "benchmarks/damBreakVof; not checked), at the %d "
+                "experimental times before it reaches the far wall: RMS "
+                "%.4f H (largest x), %.4f H (water fraction 0.5); that "
+                "front's own RMS against the experiment there: %.4f H."
+                % (what, name, r[3], r[0], r[1], r[2]),
+            ]
+    lines += [
         "",
         "| T = t sqrt(g/H) | experiment x/H | ulphPdFoam x/H | difference "
-        "| water fraction 0.5: x/H | difference |",
-        "|---|---|---|---|---|---|",
+        "| water fraction 0.5: x/H | difference |"
+        + "".join(" %s x/H |" % name[:-4] for name, _, _, _ in vofs),
+        "|---|---|---|---|---|---|" + "---|" * len(vofs),
     ]
-    for t, x, xs, e, xf, ef in errors:
+    for k, (t, x, xs, e, xf, ef) in enumerate(errors):
         lines.append("| %.3f | %.3f | %.3f | %+.3f | %.3f | %+.3f |"
-                     % (t, x, xs, e, xf, ef))
+                     % (t, x, xs, e, xf, ef)
+                     + "".join(" %.3f |" % at[k] if at[k] is not None
+                               else " |" for at in vof_at))
     lines += ["", "Plots: front%s.png, pressure%s.png (p/(rho0 g H) every "
-              "0.1 s). Reference figures: martinMoyce1952.dat."
-              % (suffix, suffix)]
+              "0.1 s). Reference figures: martinMoyce1952.dat%s."
+              % (suffix, suffix,
+                 "".join(", " + name for name, _, _, _ in vofs))]
     open(os.path.join(here, "result%s.md" % suffix), "w").write(
         "\n".join(lines) + "\n")
-    plot(T, X, F, ref, os.path.join(here, "front%s.png" % suffix))
+    plot(T, X, F, ref, vofs, os.path.join(here, "front%s.png" % suffix))
     plot_pressure(case, cost, os.path.join(here, "pressure%s.png" % suffix))
 
     print("\n".join(lines))
