@@ -22,15 +22,22 @@ G = 9.81
 
 
 def read_resolution(case):
-    text = open(os.path.join(case, "system", "resolution")).read()
+    with open(os.path.join(case, "system", "resolution")) as f:
+        text = f.read()
     values = dict(re.findall(r"(\w+)\s+([0-9]+)\s*;", text))
     return int(values["n"]), int(values["nx"]), int(values["ny"])
 
 
 def read_alpha(path, size):
     """The internal field of a volScalarField, ascii or binary."""
-    data = open(path, "rb").read()
+    with open(path, "rb") as f:
+        data = f.read()
     binary = re.search(rb"format\s+binary\s*;", data) is not None
+    arch = re.search(rb'arch\s+"([^"]*)"', data)
+    if binary and arch and (b"LSB" not in arch.group(1)
+                            or b"scalar=64" not in arch.group(1)):
+        sys.exit("front.py: %s is %s: expected LSB;scalar=64"
+                 % (path, arch.group(1).decode()))
     m = re.search(rb"internalField\s+uniform\s+([^;]+);", data)
     if m:
         return [float(m.group(1))]*size

@@ -7,8 +7,8 @@ without a blow-up; no particle goes more than half a
 spacing into a wall at any written time (without the wall repulsion one sank
 through the floor and left the tank at t = 0.73 s); the total energy never
 grows by more than 0.5 % of the column's potential energy; the front
-stays within 0.3 H RMS of the Navier-Stokes front of the same equations
-(interFoam without surface tension, benchmarks/damBreakVof) at this
+stays within 0.3 H RMS of the Navier-Stokes front without surface tension
+(interFoam, as the ULPH solver; benchmarks/damBreakVof) at this
 resolution (0.225 H; 0.131 H at the paper's 1 mm) and within 0.15 H of
 Martin & Moyce (1952) (0.093 H; the Navier-Stokes fronts themselves miss
 the experiment by 0.22 to 0.31 H, see the tutorial's README); the front

@@ -31,7 +31,8 @@ With the converged Navier-Stokes fronts of the same column by OpenFOAM's
 interFoam (benchmarks/damBreakVof) in validation/ it reports, not
 checked, the RMS difference of both fronts from each at the experiment's
 times before that front reaches the far wall, and draws them:
-interFoamFrontNoSurfaceTension.dat (the equations ULPH solves) and
+interFoamFrontNoSurfaceTension.dat (no surface tension, as the ULPH
+solver) and
 interFoamFront.dat (with water's surface tension).
 
 Writes validation/result.md (the paper's spacing, 1 mm) or
@@ -65,15 +66,19 @@ FRONT_END = 2.8         # T: the front's history ends after the impact
 # what it holds, its line in front.png
 VOF_FRONTS = [
     ("interFoamFrontNoSurfaceTension.dat",
-     "interFoam without surface tension (the equations ULPH solves)", "--"),
+     "interFoam without surface tension (as the ULPH solver)", "--"),
     ("interFoamFront.dat", "interFoam with water's surface tension", ":"),
 ]
 
 
-def reference(name="martinMoyce1952.dat"):
+def reference(name="martinMoyce1952.dat", required=True):
+    """(T, x/H) rows of a front file in validation/; an optional one that
+    is absent gives none"""
     out = []
     path = os.path.join(here, name)
     if not os.path.isfile(path):
+        if required:
+            sys.exit("validate.py: %s missing" % path)
         return out
     for line in open(path):
         if line.strip() and not line.startswith("#"):
@@ -199,7 +204,7 @@ def plot(T, X, F, ref, vofs, path):
     for name, what, style, vof in vofs:
         ax.plot([r[0] for r in vof if r[0] <= max(T)],
                 [r[1] for r in vof if r[0] <= max(T)], style, color="k",
-                lw=1, label=what.replace(" (the equations ULPH solves)", ""))
+                lw=1, label=what.replace(" (as the ULPH solver)", ""))
     ax.set_xlabel(r"$t\sqrt{g/H}$")
     ax.set_ylabel(r"$x_{front}/H$")
     ax.set_xlim(0, max(T))
@@ -265,12 +270,15 @@ def main(case, check):
             errors.append((t, x, xs, xs - x, xf, xf - x))
     rms = math.sqrt(sum(e[3] ** 2 for e in errors) / len(errors))
     rms_fill = math.sqrt(sum(e[5] ** 2 for e in errors) / len(errors))
-    vofs = [(name, what, style, reference(name))
+    vofs = [(name, what, style, reference(name, required=False))
             for name, what, style in VOF_FRONTS]
     vofs = [v for v in vofs if v[3]]
     vof_at = [[interpolate([r[0] for r in vof], [r[1] for r in vof], e[0])
                for e in errors] for _, _, _, vof in vofs]
     dx = cost["dx"]
+    # The front at the far wall: the largest x within dx of it
+    arrival = next(("%.2f" % T[k] for k in range(len(T))
+                    if X[k] * H >= 4 * H - dx), "beyond %.2f" % T[-1])
     series = times(case)
     t_end, t_last = end_time(case), series[-1][0]
     energy_scale = RHO0 * G * H ** 3 / 2
@@ -320,8 +328,8 @@ def main(case, check):
         % (cost["alpha"], cost["minPressure"],
            "with" if cost["repulsion"] else "without"),
         "",
-        "Stability through the impact on the far wall (T = 2.45 at 1 mm), the "
-        "run-up and the plunging wave:",
+        "Stability through the impact on the far wall (T = %s), the "
+        "run-up and the plunging wave:" % arrival,
         "",
     ]
     lines += ["- %s: %s" % (what, "met" if good else "MISSED")
