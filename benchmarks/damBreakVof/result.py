@@ -12,8 +12,11 @@ import glob
 import math
 import os
 import re
+import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(here, "..", "..", "etc", "python"))
+from foamMonitor import interp, pyplot  # noqa: E402
 tutorial = os.path.join(here, "..", "..", "tutorials", "ulphPdFoam",
                         "damBreak", "validation")
 # Front speed over the experiment's straight part, ending before the
@@ -39,10 +42,8 @@ def table(path):
 
 
 def at(rows, T):
-    for (t0, x0), (t1, x1) in zip(rows, rows[1:]):
-        if t0 <= T <= t1:
-            return x0 + (x1 - x0)*(T - t0)/(t1 - t0)
-    return float("nan")
+    """x/H of a front's rows at T (linear; every time asked lies inside)"""
+    return interp(T, [r[0] for r in rows], [r[1] for r in rows])
 
 
 def rms(rows, ref):
@@ -131,10 +132,8 @@ def main():
                 "tutorials/ulphPdFoam/damBreak/validation/%s." % (what, n,
                                                                  name)]
 
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
+    plt = pyplot()
+    if plt:
         fig, ax = plt.subplots(figsize=(6, 4.5))
         for suffix, n, _, rows in runs:
             ax.plot([r[0] for r in rows], [r[1] for r in rows],
@@ -153,7 +152,7 @@ def main():
         fig.tight_layout()
         fig.savefig(os.path.join(here, "front.png"), dpi=100)
         out += ["", "Plot: front.png."]
-    except ImportError:
+    else:
         out += ["", "(matplotlib missing: no plot)"]
 
     text = "\n".join(out) + "\n"
