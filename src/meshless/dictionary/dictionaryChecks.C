@@ -33,6 +33,52 @@ Foam::scalar Foam::meshless::readPositiveOrDefault
 }
 
 
+Foam::scalar Foam::meshless::readNonNegative
+(
+    const dictionary& dict,
+    const word& keyword
+)
+{
+    const scalar v = dict.get<scalar>(keyword);
+    if (!(v >= 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << keyword << "' is " << v
+            << ": expected a value >= 0" << exit(FatalIOError);
+    }
+    return v;
+}
+
+
+Foam::scalar Foam::meshless::readNonNegativeOrDefault
+(
+    const dictionary& dict,
+    const word& keyword,
+    const scalar deflt
+)
+{
+    return dict.found(keyword) ? readNonNegative(dict, keyword) : deflt;
+}
+
+
+void Foam::meshless::checkRenamed
+(
+    const dictionary& dict,
+    const std::initializer_list<std::pair<const char*, const char*>> renamed
+)
+{
+    for (const auto& r : renamed)
+    {
+        if (dict.found(r.first, keyType::LITERAL))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry '" << r.first << "' was renamed: expected '"
+                << r.second << "' (the same meaning)" << exit(FatalIOError);
+        }
+    }
+}
+
+
 Foam::scalar Foam::meshless::readInOpenRange
 (
     const dictionary& dict,

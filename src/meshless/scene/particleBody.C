@@ -76,7 +76,7 @@ Foam::meshless::particleBody::~particleBody()
 void Foam::meshless::particleBody::select(costAccounting& costs)
 {
     model_ = bodyModel::New(*this, dict_);
-    modelCost_ = costs.part(name_ + ": " + dict_.get<word>("model"));
+    modelCost_ = costs.part(name_ + "." + dict_.get<word>("model"));
 
     if (dict_.found("effects"))
     {
@@ -91,7 +91,24 @@ void Foam::meshless::particleBody::select(costAccounting& costs)
                     << exit(FatalIOError);
             }
             effects_.append(effect::New(e.keyword(), e.dict(), *this));
-            effectCosts_.append(costs.part(name_ + ": " + e.keyword()));
+            effectCosts_.append(costs.part(name_ + "." + e.keyword()));
+
+            const List<bodyModel::modelRole> roles = effects_.last().roles();
+            const bodyModel::modelRole role = model_->role();
+            if (!roles.found(role))
+            {
+                wordList models;
+                for (const bodyModel::modelRole r : roles)
+                {
+                    models.append(bodyModel::modelsOf(r));
+                }
+                FatalIOErrorInFunction(e.dict())
+                    << "Effect '" << e.keyword() << "' of body '" << name_
+                    << "' does not apply to its model "
+                    << dict_.get<word>("model") << " (a "
+                    << bodyModel::modelRoleNames[role] << "): it applies to"
+                    << " the models " << models << exit(FatalIOError);
+            }
         }
     }
 }
@@ -171,6 +188,16 @@ void Foam::meshless::particleBody::addPairEffectAccelerations
 }
 
 
+bool Foam::meshless::particleBody::correctsAt(const label timeIndex) const
+{
+    for (const effect& e : effects_)
+    {
+        if (e.correctsAt(timeIndex)) return true;
+    }
+    return false;
+}
+
+
 void Foam::meshless::particleBody::correctEffects
 (
     const pairContext& ctx,
@@ -201,7 +228,13 @@ Foam::label Foam::meshless::particleBody::costPart(const effect& e) const
 
 Foam::scalar Foam::meshless::particleBody::maxDeltaT(const scalar maxCo) const
 {
-    scalar dt = model_->maxDeltaT(maxCo);
+    return min(model_->maxDeltaT(maxCo), effectsDeltaT());
+}
+
+
+Foam::scalar Foam::meshless::particleBody::effectsDeltaT() const
+{
+    scalar dt = GREAT;
     for (const effect& e : effects_)
     {
         dt = min(dt, e.maxDeltaT());

@@ -4,6 +4,7 @@
 
 #include "particleScene.H"
 #include "bodyModel.H"
+#include "solidModel.H"
 #include "lagrangianIO.H"
 #include "vtpWriter.H"
 #include "Time.H"
@@ -29,8 +30,10 @@ Foam::meshless::particleScene::particleScene(const polyMesh& mesh)
     dim_(mesh.nSolutionD()),
     zPlane_(0.5*(mesh.bounds().min().z() + mesh.bounds().max().z())),
     domain_(mesh.bounds()),
+    relations_(),
     bodies_(),
     costs_(),
+    relationsCost_(costs_.part("neighbourRelations")),
     writeCost_(costs_.part("write")),
     vtp_(dict_.getOrDefault<bool>("vtp", false))
 {
@@ -167,6 +170,14 @@ Foam::scalar Foam::meshless::particleScene::maxDeltaT(const scalar maxCo) const
 
 void Foam::meshless::particleScene::advance(const scalar t, const scalar dt)
 {
+    for (particleBody& b : bodies_)
+    {
+        b.model().beginStep(t);
+    }
+    {
+        costAccounting::scope timer(costs_, relationsCost_);
+        relations_.update();
+    }
     for (particleBody& b : bodies_)
     {
         if (coupling_.valid() && coupling_->couples(b)) continue;
@@ -308,4 +319,41 @@ void Foam::meshless::particleScene::describe(Ostream& os) const
     if (vtp_) os << "    output: lagrangian clouds and VTK .vtp" << nl;
     os  << endl;
     os.precision(oldPrecision);
+}
+
+
+void Foam::meshless::particleScene::runCost(dictionary& d) const
+{
+    dictionary bodies;
+    dictionary subSteps;
+    auto steps = [](const subStepping& s)
+    {
+        dictionary c;
+        c.add("minSubSteps", s.minSubSteps());
+        c.add("most", s.most());
+        c.add("mean", s.mean());
+        return c;
+    };
+    for (const particleBody& b : bodies_)
+    {
+        dictionary e;
+        e.add("model", b.dict().get<word>("model"));
+        e.add("particles", b.particles().size());
+        e.add("spacing", b.spacing());
+        if (b.hasKernel()) e.add("smoothingLength", b.kernel().h());
+        bodies.add(b.name(), e);
+
+        const solidModel* s =
+            const_cast<particleBody&>(b).model().solid();
+        if (s && s->subSteps().most() > 0)
+        {
+            subSteps.add(b.name(), steps(s->subSteps()));
+        }
+    }
+    if (coupling_.valid() && coupling_->subSteps())
+    {
+        subSteps.add("coupling", steps(*coupling_->subSteps()));
+    }
+    d.add("bodies", bodies);
+    d.add("subSteps", subSteps);
 }

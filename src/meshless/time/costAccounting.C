@@ -55,3 +55,27 @@ void Foam::meshless::costAccounting::print
     );
     os  << line << nl;
 }
+
+
+Foam::dictionary Foam::meshless::costAccounting::dict
+(
+    const double loopSeconds,
+    const double particleSteps
+) const
+{
+    dictionary d;
+    for (size_t i = 0; i < names_.size(); ++i)
+    {
+        dictionary p;
+        p.add("seconds", seconds_[i]);
+        p.add("calls", label(calls_[i]));
+        p.add("share", loopSeconds > 0 ? seconds_[i]/loopSeconds : 0.0);
+        p.add
+        (
+            "usPerParticleStep",
+            particleSteps > 0 ? 1e6*seconds_[i]/particleSteps : 0.0
+        );
+        d.add(word(names_[i]), p);
+    }
+    return d;
+}

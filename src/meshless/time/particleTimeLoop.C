@@ -4,6 +4,11 @@
 
 #include "particleTimeLoop.H"
 #include "dictionaryChecks.H"
+#include "OFstream.H"
+#include "OSspecific.H"
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -71,6 +76,61 @@ Foam::scalar Foam::meshless::particleTimeLoop::adaptiveDeltaT() const
 }
 
 
+void Foam::meshless::particleTimeLoop::writeRunCost
+(
+    const double loopSeconds,
+    const label steps,
+    const double particleSteps,
+    const bool completed
+) const
+{
+    dictionary d;
+    d.add
+    (
+        "solver",
+        runTime_.controlDict().getOrDefault<word>("application", "unknown")
+    );
+    #ifdef _OPENMP
+    d.add("threads", label(omp_get_max_threads()));
+    #else
+    d.add("threads", label(1));
+    #endif
+    d.add("startTime", runTime_.startTime().value());
+    d.add("time", runTime_.value());
+    d.add("steps", steps);
+    d.add("wallTime", loopSeconds);
+    d.add("cpuTime", runTime_.elapsedCpuTime());
+    d.add("particleSteps", particleSteps);
+    d.add
+    (
+        "particleStepsPerSecond",
+        loopSeconds > 0 ? particleSteps/loopSeconds : 0.0
+    );
+    d.add("completed", word(completed ? "true" : "false"));
+    scene_.runCost(d);
+    d.add("parts", scene_.costs().dict(loopSeconds, particleSteps));
+
+    // Complete or not at all: written beside, then renamed
+    const fileName dir =
+        runTime_.globalPath()/"postProcessing"/"runCost"
+       /runTime_.timeName(runTime_.startTime().value());
+    mkDir(dir);
+    const fileName tmp(dir/".runCost.tmp");
+    {
+        OFstream os(tmp);
+        IOobject io
+        (
+            "runCost", runTime_.timeName(), runTime_,
+            IOobject::NO_READ, IOobject::NO_WRITE, false
+        );
+        io.writeHeader(os, "dictionary");
+        d.write(os, false);
+        IOobject::writeEndDivider(os);
+    }
+    Foam::mv(tmp, dir/"runCost");
+}
+
+
 void Foam::meshless::particleTimeLoop::run(const stepFunction& step)
 {
     const scalar stable = scene_.maxDeltaT(maxCo_);
@@ -90,6 +150,7 @@ void Foam::meshless::particleTimeLoop::run(const stepFunction& step)
     const double start = wallSeconds();
     const scalar tStart = runTime_.value();
     double particleSteps = 0;
+    label steps = 0;
     word lastWritten = runTime_.timeName();
 
     Info<< "Starting time loop" << nl << endl;
@@ -108,6 +169,7 @@ void Foam::meshless::particleTimeLoop::run(const stepFunction& step)
 
         step(runTime_.value() - dt, dt);
         particleSteps += nParticles;
+        ++steps;
 
         scene_.checkState(lastWritten);
         scene_.sampleMonitors(runTime_.value(), !runTime_.run());
@@ -117,6 +179,7 @@ void Foam::meshless::particleTimeLoop::run(const stepFunction& step)
         {
             scene_.write();
             lastWritten = runTime_.timeName();
+            writeRunCost(wallSeconds() - start, steps, particleSteps, false);
         }
 
         const double elapsed = wallSeconds() - start;
@@ -147,6 +210,7 @@ void Foam::meshless::particleTimeLoop::run(const stepFunction& step)
     }
 
     const double loop = wallSeconds() - start;
+    writeRunCost(loop, steps, particleSteps, true);
     scene_.costs().print(Info, loop, particleSteps);
     char line[128];
     std::snprintf

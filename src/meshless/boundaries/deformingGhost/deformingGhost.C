@@ -22,21 +22,25 @@ Foam::meshless::deformingGhost::deformingGhost
     (
         body.particles().addScratchField("ghostMown", particleField::kind::tensor)
     ),
-    W_(nullptr)
+    own_(nullptr)
 {}
 
 
-void Foam::meshless::deformingGhost::prepare(const smoothingKernel& W)
+void Foam::meshless::deformingGhost::prepare
+(
+    const smoothingKernel& W,
+    sceneRelations& relations
+)
 {
-    W_ = &W;
+    own_ = &ownRelation(relations, W, false);
     update();
 }
 
 
 void Foam::meshless::deformingGhost::update()
 {
-    if (!W_) return;
-    computeOwnShapeTensors(*W_, Mown_);
+    if (!own_) return;
+    computeOwnShapeTensors(*own_, Mown_);
 }
 
 

@@ -3,8 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "ghostBoundary.H"
-#include "ulphOperators.H"
-#include "cellLinkedList.H"
+#include "correctionMatrix.H"
 #include <algorithm>
 
 const Foam::Enum<Foam::meshless::ghostBoundary::slipType>
@@ -97,159 +96,180 @@ void Foam::meshless::ghostBoundary::requestReaction()
 }
 
 
-template<int Dim>
-void Foam::meshless::ghostBoundary::ownShapeTensorsImpl
+Foam::meshless::neighbourRelation& Foam::meshless::ghostBoundary::ownRelation
 (
+    sceneRelations& relations,
     const smoothingKernel& W,
-    particleField& Mown
-) const
+    const bool rigid
+)
 {
-    using namespace ulphOperators;
-    const particleSet& set = ghostBody_.particles();
-    const double* x = set.positions().data();
-    const double* V0 = V0_.data();
-    cellLinkedList cells(Dim, W.radius());
-    cells.build(x, set.size());
-    neighbourList own;
-    own.build(cells, x, set.size(), true);
-    double* Mo = Mown.data();
-
-    #pragma omp parallel for schedule(static)
-    for (label s = 0; s < set.size(); ++s)
-    {
-        const Eigen::Map<const vectorD<Dim>> xs(x + size_t(s)*Dim);
-        tensorD<Dim> M = tensorD<Dim>::Zero();
-        for (const label* jp = own.begin(s); jp != own.end(s); ++jp)
-        {
-            const vectorD<Dim> xsj =
-                Eigen::Map<const vectorD<Dim>>(x + size_t(*jp)*Dim) - xs;
-            M.noalias() += (W.W(xsj.norm())*V0[*jp])*(xsj*xsj.transpose());
-        }
-        Eigen::Map<tensorD<Dim>>(Mo + size_t(s)*Dim*Dim) = M;
-    }
+    const particleField& x = ghostBody_.particles().positions();
+    neighbourRelation& own = relations.inner
+    (
+        ghostBody_.name() + " (ghosts)", x, W, 0, !rigid,
+        neighbourRelation::separation | neighbourRelation::kernelValue
+    );
+    relations.update(own);
+    return own;
 }
 
 
 void Foam::meshless::ghostBoundary::computeOwnShapeTensors
 (
-    const smoothingKernel& W,
+    const neighbourRelation& own,
     particleField& M
 ) const
 {
-    if (ghostBody_.dim() == 2) ownShapeTensorsImpl<2>(W, M);
-    else ownShapeTensorsImpl<3>(W, M);
+    if (ghostBody_.dim() == 2)
+    {
+        correctionMatrix::moments<2>
+        (
+            own, V0_.data(), correctionMatrix::kernelWeight(), M.data()
+        );
+    }
+    else
+    {
+        correctionMatrix::moments<3>
+        (
+            own, V0_.data(), correctionMatrix::kernelWeight(), M.data()
+        );
+    }
 }
 
 
-template<int Dim>
-void Foam::meshless::ghostBoundary::interpolateImpl
-(
-    const neighbourList& ghostToFluid,
-    const double* xF,
-    const double* pF,
-    const double* rhoF,
-    const double* UF,
-    const double* VF,
-    const smoothingKernel& W,
-    const vector& g,
-    const scalar c0,
-    const scalar rho0
-)
+namespace
 {
-    using namespace ulphOperators;
-    const particleSet& set = ghostBody_.particles();
-    const double* xS = set.positions().data();
-    const label n = set.size();
-    vectorD<Dim> gD;
-    for (int d = 0; d < Dim; ++d) gD(d) = g[d];
-    const bool noSlip = slip_ == slipType::noSlip;
 
-    double* p = p_.data();
-    double* rho = rho_.data();
-    double* m = mass_.data();
-    const double* V0 = V0_.data();
-    const double* Uw = Uown_.data();
-    double* Uv = Uvisc_.data();
-    const double* nrm = normals();
-    double* S = S_.data();
-    double* Minv = Minv_.data();
-    const double* Mown = ownShapeTensors();
-    const double* acc = accelerations();
-
-    #pragma omp parallel for schedule(static)
-    for (label s = 0; s < n; ++s)
+//- Eq. 50-54 at a ghost particle s from its fluid neighbours f, and the
+//  fluid's part of its shape tensor
+template<int Dim>
+struct interpolationTerm
+{
+    struct sum
     {
-        const Eigen::Map<const vectorD<Dim>> xs(xS + size_t(s)*Dim);
-        double sumW = 0, sumWp = 0;
-        vectorD<Dim> sumWrhoX = vectorD<Dim>::Zero();
-        vectorD<Dim> sumWU = vectorD<Dim>::Zero();
-        tensorD<Dim> M =
-            Eigen::Map<const tensorD<Dim>>(Mown + size_t(s)*Dim*Dim);
-        for
-        (
-            const label* fp = ghostToFluid.begin(s);
-            fp != ghostToFluid.end(s);
-            ++fp
-        )
+        double sumW, sumWp;
+        Foam::meshless::vectorD<Dim> sumWrhoX, sumWU;
+        Foam::meshless::tensorD<Dim> M;
+    };
+
+    const double* pF;
+    const double* rhoF;
+    const double* UF;
+    const double* Mown;
+    Foam::meshless::vectorD<Dim> g;
+    double c0, rho0, minPressure;
+    bool noSlip;
+    const double* acc;
+    const double* Uw;
+    const double* nrm;
+    const double* V0;
+    double* p;
+    double* rho;
+    double* m;
+    double* Uv;
+    double* S;
+    double* Minv;
+
+    sum start(const Foam::label s) const
+    {
+        using namespace Foam::meshless;
+        return
         {
-            const label f = *fp;
-            const vectorD<Dim> xsf =
-                Eigen::Map<const vectorD<Dim>>(xF + size_t(f)*Dim) - xs;
-            const double w = W.W(xsf.norm());
-            sumW += w;
-            sumWp += w*pF[f];
-            sumWrhoX += (w*rhoF[f])*xsf;
-            sumWU += w*Eigen::Map<const vectorD<Dim>>(UF + size_t(f)*Dim);
-            M.noalias() += (w*VF[f])*(xsf*xsf.transpose());
-        }
+            0, 0, vectorD<Dim>::Zero(), vectorD<Dim>::Zero(),
+            ctens<Dim>(Mown, s)
+        };
+    }
+    void pair
+    (
+        sum& a, const Foam::meshless::pairView& v,
+        const Foam::label, const Foam::label q
+    ) const
+    {
+        using namespace Foam::meshless;
+        const Foam::label f = v.j[q];
+        const auto xsf = v.x<Dim>(q);
+        const double w = v.w[q];
+        a.sumW += w;
+        a.sumWp += w*pF[f];
+        a.sumWrhoX += (w*rhoF[f])*xsf;
+        a.sumWU += w*cvec<Dim>(UF, f);
+        a.M.noalias() += (w*v.V[f])*(xsf*xsf.transpose());
+    }
+    void finish(const Foam::label s, sum& a) const
+    {
+        using namespace Foam::meshless;
         tensorD<Dim> inv;
-        invertShapeTensor<Dim>(M, inv);
-        Eigen::Map<tensorD<Dim>>(Minv + size_t(s)*Dim*Dim) = inv;
+        correctionMatrix::robustInverse<Dim>(a.M, inv);
+        tens<Dim>(Minv, s) = inv;
 
         // Eq. 52: gravity less the boundary's own acceleration
-        vectorD<Dim> gEff = gD;
-        if (acc)
-        {
-            gEff -= Eigen::Map<const vectorD<Dim>>(acc + size_t(s)*Dim);
-        }
-        const double ps = sumW > 0
-            ? std::max((sumWp - gEff.dot(sumWrhoX))/sumW, minPressure_)
+        vectorD<Dim> gEff = g;
+        if (acc) gEff -= cvec<Dim>(acc, s);
+        const double ps = a.sumW > 0
+            ? std::max((a.sumWp - gEff.dot(a.sumWrhoX))/a.sumW, minPressure)
             : 0;
         const vectorD<Dim> uTilde =
-            sumW > 0 ? vectorD<Dim>(sumWU/sumW) : vectorD<Dim>::Zero();
+            a.sumW > 0 ? vectorD<Dim>(a.sumWU/a.sumW) : vectorD<Dim>::Zero();
 
         p[s] = ps;
         rho[s] = ps/(c0*c0) + rho0;
         m[s] = rho[s]*V0[s];
 
-        const Eigen::Map<const vectorD<Dim>> uw(Uw + size_t(s)*Dim);
+        const auto uw = cvec<Dim>(Uw, s);
         if (noSlip)
         {
-            Eigen::Map<vectorD<Dim>>(Uv + size_t(s)*Dim) = 2*uw - uTilde;
+            vec<Dim>(Uv, s) = 2*uw - uTilde;
         }
         else
         {
             // Free slip mirrors only the normal velocity: the fluid slides
             // along the wall without shear but cannot approach it unopposed
-            const Eigen::Map<const vectorD<Dim>> nv(nrm + size_t(s)*Dim);
-            Eigen::Map<vectorD<Dim>>(Uv + size_t(s)*Dim) =
-                uTilde - 2*uTilde.dot(nv)*nv + 2*uw.dot(nv)*nv;
+            const auto nv = cvec<Dim>(nrm, s);
+            vec<Dim>(Uv, s) = uTilde - 2*uTilde.dot(nv)*nv + 2*uw.dot(nv)*nv;
         }
-
-        Eigen::Map<tensorD<Dim>>(S + size_t(s)*Dim*Dim) = -ps*inv;
+        tens<Dim>(S, s) = -ps*inv;
     }
+};
+
+} // End anonymous namespace
+
+
+template<int Dim>
+void Foam::meshless::ghostBoundary::interpolateImpl
+(
+    const neighbourRelation& ghostToFluid,
+    const double* pF,
+    const double* rhoF,
+    const double* UF,
+    const double* VF,
+    const vector& g,
+    const scalar c0,
+    const scalar rho0
+)
+{
+    vectorD<Dim> gD;
+    for (int d = 0; d < Dim; ++d) gD(d) = g[d];
+    gather
+    (
+        ghostToFluid, VF,
+        interpolationTerm<Dim>
+        {
+            pF, rhoF, UF, ownShapeTensors(), gD, c0, rho0, minPressure_,
+            slip_ == slipType::noSlip, accelerations(), Uown_.data(),
+            normals(), V0_.data(), p_.data(), rho_.data(), mass_.data(),
+            Uvisc_.data(), S_.data(), Minv_.data()
+        }
+    );
 }
 
 
 void Foam::meshless::ghostBoundary::interpolate
 (
-    const neighbourList& ghostToFluid,
-    const double* xF,
+    const neighbourRelation& ghostToFluid,
     const double* pF,
     const double* rhoF,
     const double* UF,
     const double* VF,
-    const smoothingKernel& W,
     const vector& g,
     const scalar c0,
     const scalar rho0
@@ -257,11 +277,11 @@ void Foam::meshless::ghostBoundary::interpolate
 {
     if (ghostBody_.dim() == 2)
     {
-        interpolateImpl<2>(ghostToFluid, xF, pF, rhoF, UF, VF, W, g, c0, rho0);
+        interpolateImpl<2>(ghostToFluid, pF, rhoF, UF, VF, g, c0, rho0);
     }
     else
     {
-        interpolateImpl<3>(ghostToFluid, xF, pF, rhoF, UF, VF, W, g, c0, rho0);
+        interpolateImpl<3>(ghostToFluid, pF, rhoF, UF, VF, g, c0, rho0);
     }
 }
 

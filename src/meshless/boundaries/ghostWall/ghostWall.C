@@ -3,10 +3,9 @@
 \*---------------------------------------------------------------------------*/
 
 #include "ghostWall.H"
+#include "dictionaryChecks.H"
 #include "particleScene.H"
-#include "ulphOperators.H"
-#include "cellLinkedList.H"
-#include "neighbourList.H"
+#include "smallTensor.H"
 #include "addToRunTimeSelectionTable.H"
 #include <algorithm>
 #include <cstdint>
@@ -20,6 +19,7 @@ namespace bodyModels
 {
     defineTypeNameAndDebug(ghostWall, 0);
     addToRunTimeSelectionTable(bodyModel, ghostWall, dictionary);
+    addModelRole(ghostWall, wall);
 }
 }
 }
@@ -35,7 +35,10 @@ Foam::meshless::bodyModels::ghostWall::ghostWall
     (
         body,
         slipTypeNames.get("slip", dict),
-        dict.getOrDefault<scalar>("minPressure", -GREAT),
+        (
+            checkRenamed(dict, {{"minPressure", "minWallPressure"}}),
+            dict.getOrDefault<scalar>("minWallPressure", -GREAT)
+        ),
         word::null
     ),
     U_(body.particles().addField("U", particleField::kind::vector)),
@@ -215,10 +218,10 @@ void Foam::meshless::bodyModels::ghostWall::moveTo(const scalar t)
 template<int Dim>
 Foam::label Foam::meshless::bodyModels::ghostWall::completeFarSide
 (
-    const smoothingKernel& W
+    const smoothingKernel& W,
+    const neighbourRelation& own
 )
 {
-    using namespace ulphOperators;
     const particleSet& set = body_.particles();
     if (!set.found("wallDistance")) return 0;
 
@@ -258,10 +261,8 @@ Foam::label Foam::meshless::bodyModels::ghostWall::completeFarSide
         dmax = std::max(dmax, double(dist(s, 0)));
     }
 
-    cellLinkedList cells(Dim, R);
-    cells.build(x, n);
-    neighbourList own;
-    own.build(cells, x, n, true);
+    const label* rowStart = own.offsetData();
+    const label* idx = own.indexData();
     const double tol = 1e-6*dx;
     double* Mw = Mwall_.data();
 
@@ -296,10 +297,11 @@ Foam::label Foam::meshless::bodyModels::ghostWall::completeFarSide
         // Only where the support meets the deepest layer of the same wall:
         // a wall cut by the layer count, not a thin wall with fluid behind
         bool reachesBack = false;
-        for (const label* jp = own.begin(s); jp != own.end(s); ++jp)
+        for (label q = rowStart[s]; q < rowStart[s + 1]; ++q)
         {
-            const Eigen::Map<const vectorD<Dim>> nj(nrm + size_t(*jp)*Dim);
-            if (dist(*jp, 0) >= dmax - 0.5*dx - tol && nj.dot(ns) > 0.5)
+            const label j = idx[q];
+            const Eigen::Map<const vectorD<Dim>> nj(nrm + size_t(j)*Dim);
+            if (dist(j, 0) >= dmax - 0.5*dx - tol && nj.dot(ns) > 0.5)
             {
                 reachesBack = true;
                 break;
@@ -336,12 +338,21 @@ Foam::label Foam::meshless::bodyModels::ghostWall::completeFarSide
 }
 
 
-void Foam::meshless::bodyModels::ghostWall::prepare(const smoothingKernel& W)
+void Foam::meshless::bodyModels::ghostWall::prepare
+(
+    const smoothingKernel& W,
+    sceneRelations& relations
+)
 {
     if (prepared_) return;
-    computeOwnShapeTensors(W, Mwall_);
+
+    // The wall moves rigidly: its own pairs are those of the start
+    const neighbourRelation& own = ownRelation(relations, W, true);
+    computeOwnShapeTensors(own, Mwall_);
     const label nCompleted =
-        body_.dim() == 3 ? completeFarSide<3>(W) : completeFarSide<2>(W);
+        body_.dim() == 3
+      ? completeFarSide<3>(W, own)
+      : completeFarSide<2>(W, own);
     if (nCompleted > 0)
     {
         Info<< "    ghostWall " << body_.name() << ": shape tensors"

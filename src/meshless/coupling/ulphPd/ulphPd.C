@@ -4,9 +4,8 @@
 
 #include "ulphPd.H"
 #include "particleScene.H"
-#include "bodyModel.H"
-#include "ulph.H"
-#include "nosbPd.H"
+#include "fluidModel.H"
+#include "solidModel.H"
 #include "dictionaryChecks.H"
 #include "OSspecific.H"
 #include "addToRunTimeSelectionTable.H"
@@ -32,22 +31,15 @@ Foam::meshless::couplings::ulphPd::ulphPd
 )
 :
     fsiCoupling(dict, scene),
-    fluidBody_(&scene.body(dict.get<word>("fluid"), dict)),
-    fluid_(dynamic_cast<bodyModels::ulph*>(&fluidBody_->model())),
-    minSubSteps_
+    fluidBody_(&fluidBody("fluid")),
+    fluid_(fluidBody_->model().fluid()),
+    subSteps_
     (
-        dict.found("minSubSteps") ? readPositiveLabel(dict, "minSubSteps") : 1
-    ),
-    maxSubSteps_(0),
-    maxCo_(0.25)
+        "coupling ulphPd",
+        dict.found("minSubSteps") ? readPositiveLabel(dict, "minSubSteps") : 1,
+        "solid sub-steps per fluid step"
+    )
 {
-    if (!fluid_)
-    {
-        FatalIOErrorInFunction(dict)
-            << "coupling ulphPd: 'fluid' " << fluidBody_->name()
-            << " has model " << fluidBody_->dict().get<word>("model")
-            << ": expected ulph" << exit(FatalIOError);
-    }
     const word accType
     (
         dict.getOrDefault<word>("solidAcceleration", "none")
@@ -64,19 +56,13 @@ Foam::meshless::couplings::ulphPd::ulphPd
     {
         FatalIOErrorInFunction(dict)
             << "coupling ulphPd: 'solids' is empty: expected at least one"
-            << " body of model nosbPd" << exit(FatalIOError);
+            << " solid body (" << bodyModel::modelsOf(bodyModel::modelRole::solid)
+            << ")" << exit(FatalIOError);
     }
     for (const word& name : solids)
     {
-        particleBody& sb = scene.body(name, dict);
-        if (!dynamic_cast<bodyModels::nosbPd*>(&sb.model()))
-        {
-            FatalIOErrorInFunction(dict)
-                << "coupling ulphPd: solid '" << name << "' has model "
-                << sb.dict().get<word>("model") << ": expected nosbPd"
-                << exit(FatalIOError);
-        }
-        solidBodies_.push_back(&sb);
+        particleBody& sb = solidBody(name);
+        solidBodies_.append(&sb);
         stepAcceleration_.push_back
         (
             &sb.particles().addScratchField
@@ -91,8 +77,7 @@ Foam::meshless::couplings::ulphPd::ulphPd
             new deformingGhost(sb, stepAcc ? "stepAcceleration" : "")
         );
         ghosts_.back()->requestReaction();
-        fluid_->addGhosts(*ghosts_.back());
-        externalForce_.push_back(&sb.particles().field("externalForce"));
+        fluid_->addBoundary(*ghosts_.back());
     }
 }
 
@@ -160,10 +145,11 @@ void Foam::meshless::couplings::ulphPd::writeForces
     }
     OFstream& os = forces_();
     os  << t;
-    for (size_t k = 0; k < solidBodies_.size(); ++k)
+    forAll(solidBodies_, k)
     {
-        const vector onSolid = total(*externalForce_[k]);
-        const vector onFluid = fluid_->ghostForceOnFluid(*ghosts_[k]);
+        const vector onSolid =
+            total(solidBodies_[k]->model().solid()->externalForce());
+        const vector onFluid = fluid_->forceOnFluid(*ghosts_[k]);
         for (direction d = 0; d < 3; ++d) os << tab << onSolid[d];
         for (direction d = 0; d < 3; ++d) os << tab << onFluid[d];
     }
@@ -184,40 +170,25 @@ void Foam::meshless::couplings::ulphPd::advance
 
     // Solids over the same interval, with the fluid's force of the
     // corrector (the one that moved the fluid)
-    label nSub = minSubSteps_;
-    for (size_t k = 0; k < solidBodies_.size(); ++k)
+    forAll(solidBodies_, k)
     {
-        particleField& fExt = *externalForce_[k];
+        particleField& fExt = solidBodies_[k]->model().solid()->externalForce();
         const double* R = ghosts_[k]->reaction();
         std::copy(R, R + fExt.size()*fExt.nComponents(), fExt.data());
+    }
+    const label nSub = solidSteps(solidBodies_, dt, subSteps_);
 
-        const scalar dtSolid = solidBodies_[k]->maxDeltaT(maxCo_);
-        nSub = max
-        (
-            nSub,
-            label(std::ceil(dt/dtSolid*(1 - 1e-12)))
-        );
-    }
-    // Reported when it first exceeds what it was: an adaptive step makes
-    // it hop by one every few steps
-    if (nSub > maxSubSteps_)
+    forAll(solidBodies_, k)
     {
-        Info<< "    coupling ulphPd: " << nSub
-            << " solid sub-steps per fluid step (fluid step " << dt
-            << ", solid stable step " << dt/nSub << " or more)" << endl;
-        maxSubSteps_ = nSub;
-    }
-    const scalar h = dt/nSub;
-    for (size_t k = 0; k < solidBodies_.size(); ++k)
-    {
-        particleBody& s = *solidBodies_[k];
-        const particleField& U = s.particles().field("U");
+        const particleField& U = solidBodies_[k]->particles().field("U");
         std::vector<double>& U0 = U0_[k];
         std::copy(U.data(), U.data() + U0.size(), U0.begin());
-        for (label j = 0; j < nSub; ++j)
-        {
-            s.advance(t + j*h, h, costs);
-        }
+    }
+    stepSolids(solidBodies_, t, dt, nSub, costs);
+    forAll(solidBodies_, k)
+    {
+        const particleField& U = solidBodies_[k]->particles().field("U");
+        const std::vector<double>& U0 = U0_[k];
         double* a = stepAcceleration_[k]->data();
         for (size_t c = 0; c < U0.size(); ++c)
         {
@@ -232,12 +203,12 @@ void Foam::meshless::couplings::ulphPd::describe(Ostream& os) const
 {
     os  << "    coupling ulphPd: fluid " << fluidBody_->name()
         << ", solids (";
-    for (size_t k = 0; k < solidBodies_.size(); ++k)
+    forAll(solidBodies_, k)
     {
         os  << (k ? " " : "") << solidBodies_[k]->name();
     }
     os  << "), solid particles as the fluid's ghosts, reaction of eq. 58 on"
-        << " the solids, minSubSteps " << minSubSteps_ << nl;
+        << " the solids, minSubSteps " << subSteps_.minSubSteps() << nl;
 }
 
 

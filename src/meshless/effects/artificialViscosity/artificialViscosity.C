@@ -3,7 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "artificialViscosity.H"
-#include "ulphOperators.H"
+#include "pairLoop.H"
 #include "dictionaryChecks.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -40,6 +40,54 @@ Foam::meshless::effects::artificialViscosity::artificialViscosity
 }
 
 
+namespace
+{
+
+//- Eq. 26 summed over a particle's neighbours: sum_J w pi_IJ x_IJ V_J for
+//  approaching pairs, pi = v_IJ.x_IJ/(|x_IJ|^2 + 0.01 h^2); times
+//  coeff/rho_I M_I^-1 into the acceleration
+template<int Dim>
+struct viscousTerm
+{
+    typedef Foam::meshless::vectorD<Dim> sum;
+    typedef const double* source;
+    const Foam::meshless::pairContext* ctx;
+    double eps2;
+    double coeff;
+    double* a;
+
+    sum start(const Foam::label) const { return sum::Zero(); }
+    source at(const Foam::meshless::pairSource&, const Foam::label k) const
+    {
+        return ctx->Usrc[k];
+    }
+    void pair
+    (
+        sum& s, const source& U, const Foam::meshless::pairView& v,
+        const Foam::label i, const Foam::label q
+    ) const
+    {
+        using namespace Foam::meshless;
+        const Foam::label j = v.j[q];
+        const auto xij = v.x<Dim>(q);
+        const vectorD<Dim> uij = cvec<Dim>(U, j) - cvec<Dim>(ctx->U, i);
+        const double vx = uij.dot(xij);
+        if (vx < 0)
+        {
+            const double pi = vx/(xij.squaredNorm() + eps2);
+            s += (v.w[q]*pi*v.V[j])*xij;
+        }
+    }
+    void finish(const Foam::label i, sum& s) const
+    {
+        using namespace Foam::meshless;
+        vec<Dim>(a, i) += (coeff/ctx->rho[i])*(ctens<Dim>(ctx->Minv, i)*s);
+    }
+};
+
+} // End anonymous namespace
+
+
 template<int Dim>
 void Foam::meshless::effects::artificialViscosity::add
 (
@@ -47,43 +95,12 @@ void Foam::meshless::effects::artificialViscosity::add
     particleField& acc
 ) const
 {
-    using namespace ulphOperators;
-    const smoothingKernel& W = *ctx.W;
-    const double h = W.h();
-    const double eps2 = 0.01*h*h;
-    const double coeff = alpha_*h*ctx.c0*ctx.rho0;
-    double* a = acc.data();
-
-    #pragma omp parallel for schedule(static)
-    for (label i = 0; i < ctx.n; ++i)
-    {
-        const Eigen::Map<const vectorD<Dim>> xi(ctx.x + size_t(i)*Dim);
-        const Eigen::Map<const vectorD<Dim>> ui(ctx.U + size_t(i)*Dim);
-        vectorD<Dim> s = vectorD<Dim>::Zero();
-        for (size_t k = 0; k < ctx.sources.size(); ++k)
-        {
-            const neighbourSource& src = ctx.sources[k];
-            for (const label* jp = src.list->begin(i); jp != src.list->end(i); ++jp)
-            {
-                const label j = *jp;
-                const vectorD<Dim> xij =
-                    Eigen::Map<const vectorD<Dim>>(src.x + size_t(j)*Dim) - xi;
-                const vectorD<Dim> uij =
-                    Eigen::Map<const vectorD<Dim>>(ctx.Usrc[k] + size_t(j)*Dim)
-                  - ui;
-                const double vx = uij.dot(xij);
-                if (vx < 0)
-                {
-                    const double pi = vx/(xij.squaredNorm() + eps2);
-                    const double w = src.pairW(jp, xij.norm(), W);
-                    s += (w*pi*src.V[j])*xij;
-                }
-            }
-        }
-        const Eigen::Map<const tensorD<Dim>> Mi(ctx.Minv + size_t(i)*Dim*Dim);
-        Eigen::Map<vectorD<Dim>>(a + size_t(i)*Dim) +=
-            (coeff/ctx.rho[i])*(Mi*s);
-    }
+    const double h = ctx.W->h();
+    gather
+    (
+        ctx.n, ctx.sources,
+        viscousTerm<Dim>{&ctx, 0.01*h*h, alpha_*h*ctx.c0*ctx.rho0, acc.data()}
+    );
 }
 
 

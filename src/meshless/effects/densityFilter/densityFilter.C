@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "densityFilter.H"
+#include "pairLoop.H"
 #include "dictionaryChecks.H"
 #include "addToRunTimeSelectionTable.H"
 #include <Eigen/Dense>
@@ -47,6 +48,101 @@ Foam::meshless::effects::densityFilter::densityFilter
 {}
 
 
+namespace
+{
+
+//- Shepard's sums (eq. 24) of a particle, and with Fit the moments of the
+//  MLS fit (Shepard's value its fallback)
+template<int Dim, bool Fit>
+struct filterTerm
+{
+    typedef Eigen::Matrix<double, Dim + 1, Dim + 1> matrix;
+    typedef Eigen::Matrix<double, Dim + 1, 1> vector;
+    struct sum
+    {
+        double sumM, sumV, rhoMin, rhoMax;
+        matrix A;
+        vector b;
+    };
+    struct source { const double* m; bool own; };
+
+    const Foam::meshless::pairContext* ctx;
+    double W0;
+    double invH;
+    double* out;
+
+    sum start(const Foam::label i) const
+    {
+        const double Vi = ctx->mass[i]/ctx->rho[i];
+        sum s{W0*ctx->mass[i], W0*Vi, ctx->rho[i], ctx->rho[i], {}, {}};
+        if (Fit)
+        {
+            s.A = matrix::Zero();
+            s.b = vector::Zero();
+            s.A(0, 0) = W0*Vi;
+            s.b(0) = W0*ctx->mass[i];
+        }
+        return s;
+    }
+    source at(const Foam::meshless::pairSource&, const Foam::label k) const
+    {
+        return {ctx->massSrc[k], k == 0};
+    }
+    void pair
+    (
+        sum& s, const source& src, const Foam::meshless::pairView& v,
+        const Foam::label, const Foam::label q
+    ) const
+    {
+        const Foam::label j = v.j[q];
+        const double w = v.w[q];
+        // Own particles: V = m/rho now; walls: their volume
+        const double Vj = src.own ? src.m[j]/ctx->rho[j] : v.V[j];
+        s.sumM += w*src.m[j];
+        s.sumV += w*Vj;
+        if (Fit)
+        {
+            vector p;
+            p(0) = 1;
+            for (Foam::label d = 0; d < Dim; ++d)
+            {
+                p(d + 1) = v.xij[size_t(q)*Dim + d]*invH;
+            }
+            s.A.noalias() += (w*Vj)*p*p.transpose();
+            s.b.noalias() += (w*src.m[j])*p;
+            const double rhoj = src.m[j]/Vj;
+            s.rhoMin = std::min(s.rhoMin, rhoj);
+            s.rhoMax = std::max(s.rhoMax, rhoj);
+        }
+    }
+    void finish(const Foam::label i, sum& s) const
+    {
+        double rho = s.sumM/s.sumV;
+        if (Fit)
+        {
+            Eigen::SelfAdjointEigenSolver<matrix> eig
+            (
+                s.A, Eigen::EigenvaluesOnly
+            );
+            const vector lambda = eig.eigenvalues();
+            if (lambda(0) > 1e-3*lambda(Dim))
+            {
+                // Within the densities it fits: a fit that extrapolates
+                // (a thin jet) must not invent a density
+                const double fit = s.A.ldlt().solve(s.b)(0);
+                if (std::isfinite(fit))
+                {
+                    rho = std::min(std::max(fit, s.rhoMin), s.rhoMax);
+                }
+            }
+        }
+        out[i] = rho;
+    }
+};
+
+} // End anonymous namespace
+
+
 template<int Dim, bool Fit>
 void Foam::meshless::effects::densityFilter::filterPass
 (
@@ -54,82 +150,13 @@ void Foam::meshless::effects::densityFilter::filterPass
     double* out
 )
 {
-    typedef Eigen::Matrix<double, Dim + 1, Dim + 1> matrix;
-    typedef Eigen::Matrix<double, Dim + 1, 1> vector;
-
     const smoothingKernel& W = *ctx.W;
-    const double W0 = W.W(0);
     // Offsets in units of h keep A's blocks of one order of magnitude
-    const double invH = 1.0/W.h();
-
-    #pragma omp parallel for schedule(static)
-    for (label i = 0; i < ctx.n; ++i)
-    {
-        const double Vi = ctx.mass[i]/ctx.rho[i];
-        // Shepard's sums (eq. 24), and the fit's moments when fitting
-        double sumM = W0*ctx.mass[i];
-        double sumV = W0*Vi;
-        matrix A = matrix::Zero();
-        vector b = vector::Zero();
-        double rhoMin = ctx.rho[i], rhoMax = ctx.rho[i];
-        if (Fit)
-        {
-            A(0, 0) = W0*Vi;
-            b(0) = W0*ctx.mass[i];
-        }
-        for (size_t k = 0; k < ctx.sources.size(); ++k)
-        {
-            const neighbourSource& src = ctx.sources[k];
-            const double* m = ctx.massSrc[k];
-            for (const label* jp = src.list->begin(i); jp != src.list->end(i); ++jp)
-            {
-                const label j = *jp;
-                vector p;
-                p(0) = 1;
-                double r2 = 0;
-                for (label d = 0; d < Dim; ++d)
-                {
-                    const double dx = src.x[j*Dim + d] - ctx.x[i*Dim + d];
-                    p(d + 1) = dx*invH;
-                    r2 += dx*dx;
-                }
-                const double w = W.W(std::sqrt(r2));
-                // Own particles: V = m/rho now; walls: their volume
-                const double Vj = k == 0 ? m[j]/ctx.rho[j] : src.V[j];
-                sumM += w*m[j];
-                sumV += w*Vj;
-                if (Fit)
-                {
-                    A.noalias() += (w*Vj)*p*p.transpose();
-                    b.noalias() += (w*m[j])*p;
-                    const double rhoj = m[j]/Vj;
-                    rhoMin = std::min(rhoMin, rhoj);
-                    rhoMax = std::max(rhoMax, rhoj);
-                }
-            }
-        }
-
-        double rho = sumM/sumV;
-        if (Fit)
-        {
-            Eigen::SelfAdjointEigenSolver<matrix> eig
-            (
-                A, Eigen::EigenvaluesOnly
-            );
-            const vector lambda = eig.eigenvalues();
-            if (lambda(0) > 1e-3*lambda(Dim))
-            {
-                // Within the densities it fits: a fit that extrapolates
-                // (a thin jet) must not invent a density
-                const double fit = A.ldlt().solve(b)(0);
-                if (std::isfinite(fit))
-                {
-                    rho = std::min(std::max(fit, rhoMin), rhoMax);
-                }
-            }
-        }
-        out[i] = rho;
-    }
+    gather
+    (
+        ctx.n, ctx.sources,
+        filterTerm<Dim, Fit>{&ctx, W.W(0), 1.0/W.h(), out}
+    );
 }
 
 
@@ -158,7 +185,7 @@ void Foam::meshless::effects::densityFilter::correct
     const label timeIndex
 ) const
 {
-    if (timeIndex % interval_ != 0) return;
+    if (!correctsAt(timeIndex)) return;
 
     // A Jacobi update: every particle filtered from the old densities
     filtered_.resize(ctx.n);

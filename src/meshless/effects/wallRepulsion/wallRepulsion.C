@@ -3,7 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "wallRepulsion.H"
-#include "ulphOperators.H"
+#include "pairLoop.H"
 #include "dictionaryChecks.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -23,47 +23,75 @@ namespace effects
 namespace
 {
 
+//- Monaghan's repulsion of a fluid particle by the particles of its walls
+//  closer than r0
 template<int Dim>
-Foam::label addImpl
+struct repulsionTerm
+{
+    struct sum { Foam::meshless::vectorD<Dim> s; Foam::label n; };
+    double D, r0, r02, p1, p2;
+    double* a;
+    Foam::label* count;
+
+    sum start(const Foam::label) const
+    {
+        return {Foam::meshless::vectorD<Dim>::Zero(), 0};
+    }
+    void pair
+    (
+        sum& acc, const Foam::meshless::pairView& v,
+        const Foam::label, const Foam::label q
+    ) const
+    {
+        const Foam::meshless::vectorD<Dim> xji = -v.x<Dim>(q);
+        const double r2 = xji.squaredNorm();
+        if (r2 < r02 && r2 > 0)
+        {
+            const double r = std::sqrt(r2);
+            acc.s += (Foam::meshless::effects::wallRepulsion::magnitude
+                  (r, D, r0, p1, p2)/r)*xji;
+            ++acc.n;
+        }
+    }
+    void finish(const Foam::label i, sum& acc) const
+    {
+        Foam::meshless::vec<Dim>(a, i) += acc.s;
+        if (count) count[i] = acc.n;
+    }
+};
+
+//- The repulsion of ctx's wall sources (collected into walls)
+void addImpl
 (
     const Foam::meshless::pairContext& ctx,
     const double D,
     const double r0,
     const double p1,
     const double p2,
-    double* a
+    double* a,
+    Foam::label* count,
+    std::vector<Foam::meshless::pairSource>& walls
 )
 {
-    using namespace Foam::meshless::ulphOperators;
-    using Foam::meshless::effects::wallRepulsion;
-    const double r02 = r0*r0;
-    Foam::label nPairs = 0;
-
-    #pragma omp parallel for schedule(static) reduction(+:nPairs)
-    for (Foam::label i = 0; i < ctx.n; ++i)
+    walls.clear();
+    for (size_t k = 1; k < ctx.sources.size(); ++k)
     {
-        const Eigen::Map<const vectorD<Dim>> xi(ctx.x + size_t(i)*Dim);
-        vectorD<Dim> s = vectorD<Dim>::Zero();
-        for (size_t k = 1; k < ctx.sources.size(); ++k)
-        {
-            if (!ctx.wallSource[k]) continue;
-            const auto& src = ctx.sources[k];
-            for (const Foam::label* jp = src.list->begin(i); jp != src.list->end(i); ++jp)
-            {
-                const vectorD<Dim> xji =
-                    xi - Eigen::Map<const vectorD<Dim>>(src.x + size_t(*jp)*Dim);
-                const double r2 = xji.squaredNorm();
-                if (r2 < r02 && r2 > 0)
-                {
-                    const double r = std::sqrt(r2);
-                    s += (wallRepulsion::magnitude(r, D, r0, p1, p2)/r)*xji;
-                    ++nPairs;
-                }
-            }
-        }
-        Eigen::Map<vectorD<Dim>>(a + size_t(i)*Dim) += s;
+        if (ctx.wallSource[k]) walls.push_back(ctx.sources[k]);
     }
-    return nPairs;
+    if (ctx.dim == 2)
+    {
+        Foam::meshless::gather
+        (
+            ctx.n, walls, repulsionTerm<2>{D, r0, r0*r0, p1, p2, a, count}
+        );
+    }
+    else
+    {
+        Foam::meshless::gather
+        (
+            ctx.n, walls, repulsionTerm<3>{D, r0, r0*r0, p1, p2, a, count}
+        );
+    }
 }
 
 } // End anonymous namespace
@@ -121,9 +149,12 @@ Foam::label Foam::meshless::effects::wallRepulsion::add
     double* acc
 )
 {
-    return ctx.dim == 2
-        ? addImpl<2>(ctx, D, r0, p1, p2, acc)
-        : addImpl<3>(ctx, D, r0, p1, p2, acc);
+    std::vector<label> count(ctx.n, 0);
+    std::vector<pairSource> walls;
+    addImpl(ctx, D, r0, p1, p2, acc, count.data(), walls);
+    label nPairs = 0;
+    for (const label c : count) nPairs += c;
+    return nPairs;
 }
 
 
@@ -133,7 +164,7 @@ void Foam::meshless::effects::wallRepulsion::addPairAcceleration
     particleField& acc
 ) const
 {
-    add(ctx, D_, r0_, p1_, p2_, acc.data());
+    addImpl(ctx, D_, r0_, p1_, p2_, acc.data(), nullptr, walls_);
 }
 
 

@@ -13,6 +13,7 @@ namespace bodyModels
 {
     defineTypeNameAndDebug(fixed, 0);
     addToRunTimeSelectionTable(bodyModel, fixed, dictionary);
+    addModelRole(fixed, wall);
 }
 }
 }

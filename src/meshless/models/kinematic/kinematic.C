@@ -13,6 +13,7 @@ namespace bodyModels
 {
     defineTypeNameAndDebug(kinematic, 0);
     addToRunTimeSelectionTable(bodyModel, kinematic, dictionary);
+    addModelRole(kinematic, kinematic);
 }
 }
 }

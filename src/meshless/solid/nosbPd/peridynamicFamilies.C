@@ -3,12 +3,14 @@
 \*---------------------------------------------------------------------------*/
 
 #include "peridynamicFamilies.H"
+#include "pairLoop.H"
 #include "lagrangianIO.H"
 #include "labelPair.H"
 #include "OFstream.H"
 #include "IFstream.H"
 #include "OSspecific.H"
 #include <unordered_map>
+#include <cmath>
 
 const Foam::word Foam::meshless::peridynamicFamilies::brokenBondsName
 (
@@ -20,50 +22,14 @@ const Foam::word Foam::meshless::peridynamicFamilies::brokenBondsName
 
 Foam::meshless::peridynamicFamilies::peridynamicFamilies
 (
-    const particleField& X0,
-    const particleField& V,
-    const smoothingKernel& W
+    const neighbourRelation& bonds,
+    std::vector<char>& intact
 )
 :
-    dim_(X0.nComponents())
+    bonds_(bonds),
+    intact_(intact)
 {
-    const label n = X0.size();
-    cellLinkedList cells(dim_, W.radius());
-    cells.build(X0.data(), n);
-    bonds_.build(cells, X0.data(), n, true);
-
-    omegaV_.resize(bonds_.nPairs());
     intact_.assign(bonds_.nPairs(), 1);
-    const label* idx = bonds_.indexData();
-
-    #pragma omp parallel for schedule(static)
-    for (label i = 0; i < n; ++i)
-    {
-        for (label b = begin(i); b < end(i); ++b)
-        {
-            const label j = idx[b];
-            scalar r2 = 0;
-            for (label d = 0; d < dim_; ++d)
-            {
-                r2 += sqr(X0(j, d) - X0(i, d));
-            }
-            omegaV_[b] = W.W(std::sqrt(r2))*V(j, 0);
-        }
-    }
-
-    reverse_.assign(bonds_.nPairs(), -1);
-    #pragma omp parallel for schedule(static)
-    for (label i = 0; i < n; ++i)
-    {
-        for (label b = begin(i); b < end(i); ++b)
-        {
-            const label j = idx[b];
-            for (label c = begin(j); c < end(j); ++c)
-            {
-                if (idx[c] == i) { reverse_[b] = c; break; }
-            }
-        }
-    }
 }
 
 
@@ -77,26 +43,97 @@ Foam::label Foam::meshless::peridynamicFamilies::nBrokenSides() const
 }
 
 
+namespace
+{
+
+//- Break the intact bonds of a particle stretched to s0 (each particle
+//  writes only its own row); the count per particle
+struct breakTerm
+{
+    typedef Foam::label sum;
+    const double* x;
+    Foam::label dim;
+    double s0;
+    char* intact;
+    Foam::label* broken;
+
+    sum start(const Foam::label) const { return 0; }
+    void pair
+    (
+        sum& n, const Foam::meshless::pairView& v, const Foam::label i,
+        const Foam::label q
+    ) const
+    {
+        if (!intact[q]) return;
+        const Foam::label j = v.j[q];
+        double r2 = 0;
+        for (Foam::label d = 0; d < dim; ++d)
+        {
+            const double dx = x[j*dim + d] - x[i*dim + d];
+            r2 += dx*dx;
+        }
+        if ((std::sqrt(r2) - v.r[q])/v.r[q] >= s0)
+        {
+            intact[q] = 0;
+            ++n;
+        }
+    }
+    void finish(const Foam::label i, sum& n) const { broken[i] = n; }
+};
+
+
+//- Volumes of all and of the intact bonds of a particle: 1 - kept/all
+struct damageTerm
+{
+    struct sum { double all, kept; };
+    const char* intact;
+    double* phi;
+
+    sum start(const Foam::label) const { return {0, 0}; }
+    void pair
+    (
+        sum& s, const Foam::meshless::pairView& v, const Foam::label,
+        const Foam::label q
+    ) const
+    {
+        const double Vj = v.V[v.j[q]];
+        s.all += Vj;
+        if (intact[q]) s.kept += Vj;
+    }
+    void finish(const Foam::label i, sum& s) const
+    {
+        phi[i] = s.all > 0 ? 1 - s.kept/s.all : 0;
+    }
+};
+
+} // End anonymous namespace
+
+
+Foam::label Foam::meshless::peridynamicFamilies::breakBonds
+(
+    const double* x,
+    const scalar s0
+)
+{
+    broken_.resize(size());
+    gather
+    (
+        bonds_, nullptr,
+        breakTerm{x, bonds_.dim(), s0, intact_.data(), broken_.data()}
+    );
+    label n = 0;
+    for (const label b : broken_) n += b;
+    return n;
+}
+
+
 void Foam::meshless::peridynamicFamilies::damage
 (
     const particleField& V,
     particleField& phi
 ) const
 {
-    const label* idx = bonds_.indexData();
-
-    #pragma omp parallel for schedule(static)
-    for (label i = 0; i < size(); ++i)
-    {
-        scalar all = 0, kept = 0;
-        for (label b = begin(i); b < end(i); ++b)
-        {
-            const scalar Vj = V(idx[b], 0);
-            all += Vj;
-            if (intact_[b]) kept += Vj;
-        }
-        phi(i, 0) = all > 0 ? 1 - kept/all : 0;
-    }
+    gather(bonds_, V.data(), damageTerm{intact_.data(), phi.data()});
 }
 
 
