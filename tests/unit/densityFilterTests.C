@@ -7,16 +7,19 @@ Description
     MLS keeps every particle's density (a linear field) while Shepard raises
     the top row's, the kick that keeps still water's surface oscillating;
     both keep a uniform density; a particle with one neighbour (a spray
-    droplet: A singular) falls back to the Shepard value; 3D as well.
+    droplet: A singular) falls back to the Shepard value; 3D as well. With
+    wall particles below the water (a source of their own, with their
+    masses and volumes) both keep the hydrostatic density of the bottom
+    row, which Shepard without them lowers.
 
 \*---------------------------------------------------------------------------*/
 
 #include <gtest/gtest.h>
 #include "densityFilter.H"
 #include "smoothingKernel.H"
-#include "cellLinkedList.H"
 #include "testHelpers.H"
 #include <cmath>
+#include <memory>
 
 using namespace Foam;
 using namespace Foam::meshless;
@@ -31,16 +34,18 @@ struct water
 {
     label dim;
     double dx;
-    std::vector<double> x, rho, mass;
+    label nx, ny;
+    std::vector<double> x, rho, mass, xWall, wallMass;
     autoPtr<smoothingKernel> W;
-    autoPtr<cellLinkedList> cells;
-    neighbourList own;
+    std::unique_ptr<meshlessTest::pairFixture> fx;
     pairContext ctx;
 
     water(const label d, const label nx, const label ny, const double dx_)
     :
         dim(d),
         dx(dx_),
+        nx(nx),
+        ny(ny),
         W
         (
             smoothingKernel::New
@@ -67,9 +72,10 @@ struct water
 
     label size() const { return label(x.size())/dim; }
 
-    //- Densities f(x), masses rho V, and the context over them
+    //- Densities f(x), masses rho V, and the context over them, with
+    //  wallRows rows of wall particles (density f, volume dx^dim) below
     template<class Field>
-    void set(const Field& f)
+    void set(const Field& f, const label wallRows = 0)
     {
         const label n = size();
         rho.resize(n);
@@ -79,18 +85,46 @@ struct water
             rho[p] = f(&x[p*dim]);
             mass[p] = rho[p]*std::pow(dx, dim);
         }
-        cells.reset(new cellLinkedList(dim, W->radius()));
-        cells->build(x.data(), n);
-        own.build(*cells, x.data(), n, true);
+        // The body's own relation (its volumes are m/rho: none given)
+        fx.reset(new meshlessTest::pairFixture(dim));
+        fx->addBody(x, 0.0);
+        fx->relate
+        (
+            0, 0, *W, 0,
+            neighbourRelation::separation | neighbourRelation::kernelValue
+        );
         ctx.dim = dim;
         ctx.W = W.get();
         ctx.n = n;
-        ctx.x = x.data();
+        ctx.x = fx->x(0).data();
         ctx.rho = rho.data();
         ctx.mass = mass.data();
-        ctx.sources = {{&own, x.data(), nullptr}};
+        ctx.sources = {{fx->sources(0)[0].rel, nullptr}};
         ctx.massSrc = {mass.data()};
         ctx.wallSource = {false};
+        if (wallRows == 0) return;
+
+        xWall.clear();
+        wallMass.clear();
+        const label nz = dim == 3 ? nx : 1;
+        for (label k = 0; k < nz; ++k)
+        for (label j = ny; j < ny + wallRows; ++j)
+        for (label i = 0; i < nx; ++i)
+        {
+            xWall.push_back(i*dx);
+            xWall.push_back(-(j + 0.5)*dx);
+            if (dim == 3) xWall.push_back(k*dx);
+            wallMass.push_back(f(&xWall[xWall.size() - dim])*std::pow(dx, dim));
+        }
+        fx->addBody(xWall, std::pow(dx, dim));
+        const neighbourRelation& toWall = fx->relate
+        (
+            0, 1, *W, 0,
+            neighbourRelation::separation | neighbourRelation::kernelValue
+        );
+        ctx.sources.push_back(fx->source(toWall));
+        ctx.massSrc.push_back(wallMass.data());
+        ctx.wallSource.push_back(true);
     }
 
     std::vector<double> filtered(const densityFilter::methodType m) const
@@ -158,6 +192,42 @@ TEST(densityFilter, mlsKeepsHydrostaticDensity3D)
     for (label p = 0; p < w.size(); ++p)
     {
         EXPECT_NEAR(mls[p], w.rho[p], 1e-10*rho0);
+    }
+}
+
+
+TEST(densityFilter, wallParticlesKeepTheBottomRowsDensity)
+{
+    // Three rows of wall particles below: the bottom row's neighbourhood
+    // is symmetric in y again, so both methods keep the hydrostatic
+    // density there; without the wall Shepard averages in only the
+    // lighter water above and lowers it
+    for (const label dim : {2, 3})
+    {
+        const label nx = dim == 2 ? 20 : 9, ny = 8;
+        water w(dim, nx, ny, 0.005);
+        w.set(hydrostatic);
+        const auto alone = w.filtered(densityFilter::methodType::Shepard);
+        w.set(hydrostatic, 3);
+        ASSERT_GT(w.ctx.sources[1].rel->nPairs(), 0);
+        const auto mls = w.filtered(densityFilter::methodType::MLS);
+        const auto shepard = w.filtered(densityFilter::methodType::Shepard);
+        const double step = rho0*g*w.dx/(c0*c0);
+        for (label p = 0; p < w.size(); ++p)
+        {
+            EXPECT_NEAR(mls[p], w.rho[p], 1e-10*rho0) << dim << "D, " << p;
+            const label row = p/nx % ny;
+            if (row >= ny - 3)
+            {
+                EXPECT_NEAR(shepard[p], w.rho[p], 1e-10*rho0)
+                    << dim << "D, " << p;
+                if (row == ny - 1)
+                {
+                    EXPECT_LT(alone[p] - w.rho[p], -0.2*step)
+                        << dim << "D, " << p;
+                }
+            }
+        }
     }
 }
 

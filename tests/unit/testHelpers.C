@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "testHelpers.H"
+#include "neighbourRelation.H"
 #include "error.H"
 #include "IStringStream.H"
 #include <random>
@@ -44,6 +45,26 @@ std::vector<double> meshlessTest::latticePoints
                 if (dim == 3) x.push_back(k*dx);
             }
         }
+    }
+    return x;
+}
+
+
+std::vector<double> meshlessTest::jitteredPoints
+(
+    const label dim,
+    const label nPerSide,
+    const double dx,
+    const double jitter,
+    const unsigned seed
+)
+{
+    std::vector<double> x = latticePoints(dim, nPerSide, dx);
+    if (jitter > 0)
+    {
+        std::mt19937_64 gen(seed);
+        std::uniform_real_distribution<double> u(-jitter*dx, jitter*dx);
+        for (auto& v : x) v += u(gen);
     }
     return x;
 }
@@ -107,4 +128,167 @@ Foam::dictionary meshlessTest::dictFrom(const std::string& text)
 {
     Foam::IStringStream is(text);
     return Foam::dictionary(is);
+}
+
+
+Foam::autoPtr<Foam::meshless::smoothingKernel> meshlessTest::kernel
+(
+    const label dim,
+    const double dx,
+    const std::string& dict
+)
+{
+    return Foam::meshless::smoothingKernel::New(dictFrom(dict), dim, dx);
+}
+
+
+Foam::label meshlessTest::countFlags(const std::vector<char>& flags)
+{
+    label n = 0;
+    for (const char f : flags) n += f != 0;
+    return n;
+}
+
+
+// * * * * * * * * * * * * * * * * pairFixture  * * * * * * * * * * * * * * //
+
+const unsigned meshlessTest::pairFixture::allGeometry =
+    Foam::meshless::neighbourRelation::separation
+  | Foam::meshless::neighbourRelation::kernelValue
+  | Foam::meshless::neighbourRelation::kernelGradient;
+
+
+meshlessTest::pairFixture::body::body
+(
+    const label dim,
+    const std::vector<double>& points,
+    const std::vector<double>& volumes
+)
+:
+    x("x", Foam::meshless::particleField::kind::vector, dim),
+    V("V", Foam::meshless::particleField::kind::scalar, dim)
+{
+    const label n = label(points.size())/dim;
+    if (label(points.size()) != n*dim || label(volumes.size()) != n)
+    {
+        FatalErrorInFunction
+            << points.size() << " coordinates and " << volumes.size()
+            << " volumes for points of dimension " << dim
+            << Foam::exit(Foam::FatalError);
+    }
+    x.resize(n);
+    V.resize(n);
+    std::copy(points.begin(), points.end(), x.data());
+    std::copy(volumes.begin(), volumes.end(), V.data());
+}
+
+
+Foam::label meshlessTest::pairFixture::addBody
+(
+    const std::vector<double>& points,
+    const std::vector<double>& volumes
+)
+{
+    bodies_.emplace_back(new body(dim_, points, volumes));
+    return nBodies() - 1;
+}
+
+
+Foam::label meshlessTest::pairFixture::addBody
+(
+    const std::vector<double>& points,
+    const double volume
+)
+{
+    return addBody(points, std::vector<double>(points.size()/dim_, volume));
+}
+
+
+Foam::meshless::neighbourRelation& meshlessTest::pairFixture::relate
+(
+    const label a,
+    const label b,
+    const Foam::meshless::smoothingKernel& W,
+    const double skin,
+    const unsigned geometry
+)
+{
+    using namespace Foam::meshless;
+    const double radius = W.radius()*(1 + skin);
+    cellLinkedList* list = nullptr;
+    for (const cells& c : cells_)
+    {
+        if (c.b == b && c.radius == radius) list = c.list.get();
+    }
+    if (!list)
+    {
+        cells_.push_back
+        (
+            cells{b, radius, std::unique_ptr<cellLinkedList>
+            (
+                new cellLinkedList(dim_, radius)
+            )}
+        );
+        list = cells_.back().list.get();
+        list->build(bodies_[b]->x.data(), bodies_[b]->size());
+    }
+    relations_.push_back
+    (
+        relation{a, b, std::unique_ptr<neighbourRelation>
+        (
+            new neighbourRelation
+            (
+                "relation" + Foam::name(a) + "-" + Foam::name(b),
+                bodies_[a]->x, bodies_[b]->x, a == b, W, *list, geometry,
+                false
+            )
+        )}
+    );
+    neighbourRelation& rel = *relations_.back().rel;
+    rel.build();
+    return rel;
+}
+
+
+std::vector<Foam::meshless::pairSource>
+meshlessTest::pairFixture::sources(const label a) const
+{
+    std::vector<Foam::meshless::pairSource> s;
+    for (const relation& r : relations_)
+    {
+        if (r.a == a) s.push_back({r.rel.get(), bodies_[r.b]->V.data()});
+    }
+    return s;
+}
+
+
+Foam::meshless::pairSource meshlessTest::pairFixture::source
+(
+    const Foam::meshless::neighbourRelation& rel
+) const
+{
+    for (const relation& r : relations_)
+    {
+        if (r.rel.get() == &rel) return {&rel, bodies_[r.b]->V.data()};
+    }
+    FatalErrorInFunction
+        << "Relation " << rel.name() << " is not the fixture's"
+        << Foam::exit(Foam::FatalError);
+    return {nullptr, nullptr};
+}
+
+
+void meshlessTest::pairFixture::rebuild()
+{
+    for (cells& c : cells_)
+    {
+        c.list->build(bodies_[c.b]->x.data(), bodies_[c.b]->size());
+    }
+    for (relation& r : relations_) r.rel->build();
+}
+
+
+void meshlessTest::pairFixture::updateGeometry()
+{
+    for (relation& r : relations_) r.rel->updateGeometry();
 }

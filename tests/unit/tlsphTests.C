@@ -2,7 +2,11 @@
   meshlessFoam: meshless fluid-structure interaction inside OpenFOAM
 -------------------------------------------------------------------------------
 Description
-    Total Lagrangian SPH (tlsphOperators) and its constitutive laws:
+    Total Lagrangian SPH on the correspondence core (the reference
+    relation, correctionMatrix::fitWeights with the kernel-gradient weights
+    c = -V_b W'(r)/r and L = h, correspondenceOperators' F and internal
+    force, tlsphOperators' hourglass control, mirrored clamp and strain
+    gradient) and its constitutive laws:
     - F (and so the Green-Lagrange strain) is exact for affine maps at every
       particle, boundary included, on lattices and perturbed particles, 2D
       and 3D (with the correction K; without it, wrong at the boundary);
@@ -17,8 +21,8 @@ Description
       restoring force) that the hourglass control resists;
     - gradientOrder 2: F exact for quadratic maps at every particle,
       boundary included (order 1 is not at the boundary); the force is
-      eq. 42 for order 1 and minus the gradient of sum_a V_a W(F_a) for
-      order 2 too;
+      eq. 42 for order 1 (whose weights are eq. 35's K^-T V_b grad0 W_ab)
+      and minus the gradient of sum_a V_a W(F_a) for order 2 too;
     - a clamp mirrored across its face (images moving as minus their
       mirrors) is variational with the images' stress cleared and their
       forces folded onto the mirrors, and not without;
@@ -32,10 +36,11 @@ Description
 
 #include <gtest/gtest.h>
 #include "testHelpers.H"
+#include "referenceBlock.H"
 #include "tlsphOperators.H"
+#include "smallTensor.H"
 #include "linearElastic.H"
 #include "stVenantKirchhoff.H"
-#include "cellLinkedList.H"
 #include <random>
 
 using namespace Foam;
@@ -44,16 +49,20 @@ using namespace Foam::meshless;
 namespace
 {
 
-//- A solid block: reference positions, volumes, pairs and kernel data
+//- A solid block: reference positions, volumes, the reference relation
+//  (correspondenceSolid's) and tlsph's fit: c = -V_b W'(r)/r, L = h
 template<int Dim>
 struct block
 {
-    label n;
     std::vector<double> X, V;
-    autoPtr<smoothingKernel> W;
-    neighbourList pairs;
-    std::vector<double> vgradW, corrGradW, Wab, KinvT, hessW;
-    std::vector<label> rev;
+    label n;
+    meshlessTest::referenceBlock<Dim> rb;
+    const autoPtr<smoothingKernel>& W;
+    const neighbourRelation& pairs;
+
+    //- V_b grad0 W_ab per pair (the uncorrected gradient's weights) and
+    //  K_a^-T per particle (eq. 35: K_a = sum_b X_ab (x) V_b grad0 W_ab)
+    std::vector<double> vgradW, KinvT;
 
     block
     (
@@ -62,39 +71,58 @@ struct block
         const double jitter,
         const label order = 1
     )
+    :
+        X(meshlessTest::jitteredPoints(Dim, nPerSide, dx, jitter, 5)),
+        V(X.size()/Dim, Dim == 2 ? dx*dx : dx*dx*dx),
+        n(label(X.size())/Dim),
+        rb
+        (
+            X, V, dx, "type cubicSpline; smoothingLengthRatio 1.2;"
+        ),
+        W(rb.W),
+        pairs(rb.rel())
     {
-        X = meshlessTest::latticePoints(Dim, nPerSide, dx);
-        std::mt19937_64 gen(5);
-        std::uniform_real_distribution<double> u(-jitter*dx, jitter*dx);
-        for (auto& v : X) v += u(gen);
-        n = label(X.size())/Dim;
-        V.assign(n, Dim == 2 ? dx*dx : dx*dx*dx);
-        W = smoothingKernel::New
+        EXPECT_EQ
         (
-            meshlessTest::dictFrom("type cubicSpline; smoothingLengthRatio 1.2;"),
-            Dim,
-            dx
+            rb.fit(meshlessTest::weighting::kernelGradient, order), 0
         );
-        cellLinkedList cells(Dim, W->radius());
-        cells.build(X.data(), n);
-        pairs.build(cells, X.data(), n, true);
-        const label singular = tlsphOperators::reference<Dim>
-        (
-            pairs, W(), X.data(), V.data(), vgradW, corrGradW, Wab, KinvT,
-            order, order == 2 ? &hessW : nullptr
-        );
-        EXPECT_EQ(singular, -1);
-        rev = tlsphOperators::reversePairs(pairs);
+        EXPECT_EQ(meshlessTest::countFlags(rb.resolved), n);
+
+        // grad0 W_ab = W'(r) (X_a - X_b)/r = -W'(r)/r X_ab: V_b grad0 W_ab
+        // is the gradient weighting's c_ab X_ab
+        const label np = pairs.nPairs();
+        vgradW.resize(size_t(np)*Dim);
+        for (label p = 0; p < np; ++p)
+        {
+            const double c =
+                -V[pairs.index(p)]*pairs.dw()[p]/pairs.r()[p];
+            for (int i = 0; i < Dim; ++i)
+            {
+                vgradW[p*Dim + i] = c*pairs.xij()[p*Dim + i];
+            }
+        }
+        KinvT.assign(size_t(n)*Dim*Dim, 0);
+        for (label a = 0; a < n; ++a)
+        {
+            tensorD<Dim> K = tensorD<Dim>::Zero();
+            for (label p = pairs.offset(a); p < pairs.offset(a + 1); ++p)
+            {
+                K += cvec<Dim>(pairs.xij(), p)
+                    *cvec<Dim>(vgradW.data(), p).transpose();
+            }
+            tens<Dim>(KinvT.data(), a) = K.inverse().transpose();
+        }
     }
+
+    //- The gradient weights of F (order 1: K_a^-T V_b grad0 W_ab, eq. 35)
+    const std::vector<double>& corrGradW() const { return rb.G; }
+
+    //- The order 2 fit's second-derivative weights
+    const std::vector<double>& hessW() const { return rb.H; }
 
     std::vector<double> F(const std::vector<double>& x) const
     {
-        std::vector<double> F(n*Dim*Dim);
-        tlsphOperators::deformationGradient<Dim>
-        (
-            pairs, corrGradW.data(), X.data(), x.data(), F.data()
-        );
-        return F;
+        return rb.F(x);
     }
 
     //- Interior: a full support inside the block, and (deep) so have all
@@ -125,29 +153,18 @@ struct block
     ) const
     {
         const std::vector<double> Fv = F(x);
-        std::vector<double> P(n*Dim*Dim), f(n*Dim);
+        std::vector<double> P(n*Dim*Dim);
         for (label a = 0; a < n; ++a)
         {
-            tensor Fa(tensor::I);
-            for (int i = 0; i < Dim; ++i)
-            {
-                for (int j = 0; j < Dim; ++j)
-                {
-                    Fa[3*i + j] = Fv[(a*Dim + i)*Dim + j];
-                }
-            }
-            const tensor Pa = law.stress(a, Fa, Fa);
-            tlsphOperators::stressDim<Dim>(Pa.cdata(), P.data() + a*Dim*Dim);
+            const tensor Fa = toTensor(Fv.data(), a, Dim);
+            fromTensor(law.stress(a, Fa, Fa), a, Dim, P.data());
         }
-        tlsphOperators::internalForce<Dim>
-        (
-            pairs, corrGradW.data(), rev.data(), V.data(), P.data(), f.data()
-        );
+        std::vector<double> f = rb.internalForce(P);
         if (hourglass > 0)
         {
             tlsphOperators::hourglassForce<Dim>
             (
-                pairs, Wab.data(), V.data(), X.data(), x.data(), Fv.data(),
+                pairs, V.data(), x.data(), Fv.data(),
                 0.5*hourglass*law.elastic().E(), f.data()
             );
         }
@@ -606,6 +623,20 @@ TEST(tlsph, internalForceIsEq42AndTheEnergyGradient)
             scale = max(scale, mag(fa));
         }
         EXPECT_LT(err/scale, 1e-12);
+
+        // The order 1 fit's weights are eq. 35's K_a^-T V_b grad0 W_ab
+        double gErr = 0, gScale = 0;
+        for (label a = 0; a < b.n; ++a)
+        {
+            for (label p = b.pairs.offset(a); p < b.pairs.offset(a + 1); ++p)
+            {
+                const vectorD<2> g =
+                    ctens<2>(b.KinvT.data(), a)*cvec<2>(b.vgradW.data(), p);
+                gErr = max(gErr, (cvec<2>(b.corrGradW().data(), p) - g).norm());
+                gScale = max(gScale, g.norm());
+            }
+        }
+        EXPECT_LT(gErr/gScale, 1e-12);
     }
 
     // Both orders: f_a = -d/dx_a sum_c V_c W(F_c) (central differences)
@@ -721,16 +752,12 @@ TEST(tlsph, mirroredClampIsTheGradientOfTheBodysEnergy)
             (
                 Fv[4*a], Fv[4*a + 1], 0, Fv[4*a + 2], Fv[4*a + 3], 0, 0, 0, 1
             );
-            tlsphOperators::stressDim<2>
-            (
-                L->stress(a, Fa, Fa).cdata(), P.data() + 4*a
-            );
+            fromTensor(L->stress(a, Fa, Fa), a, 2, P.data());
         }
         if (fold) tlsphOperators::clearImageStress<2>(mirrors, P.data());
-        tlsphOperators::internalForce<2>
+        correspondence::internalForce<2>
         (
-            b.pairs, b.corrGradW.data(), b.rev.data(), b.V.data(), P.data(),
-            f.data()
+            b.pairs, b.corrGradW().data(), b.V.data(), P.data(), f.data()
         );
         if (fold) tlsphOperators::foldImageForces<2>(mirrors, f.data());
         return f;
@@ -781,17 +808,14 @@ double taylorEnergy
     std::vector<double> G(8*b.n), T(8*b.n), P(4*b.n);
     tlsphOperators::strainGradient<2>
     (
-        b.pairs, b.hessW.data(), b.X.data(), x.data(), G.data()
+        b.pairs, b.hessW().data(), b.X.data(), x.data(), G.data()
     );
     double E = 0;
     for (label a = 0; a < b.n; ++a)
     {
         const tensor Fa(Fv[4*a], Fv[4*a + 1], 0, Fv[4*a + 2], Fv[4*a + 3], 0, 0, 0, 1);
         E += b.V[a]*L.energyDensity(a, Fa);
-        tlsphOperators::stressDim<2>
-        (
-            L.stress(a, Fa, Fa).cdata(), P.data() + 4*a
-        );
+        fromTensor(L.stress(a, Fa, Fa), a, 2, P.data());
         for (int k = 0; k < 2; ++k)
         {
             const double* e = G.data() + 8*a + 4*k;
@@ -812,14 +836,13 @@ double taylorEnergy
     if (f)
     {
         f->assign(2*b.n, 0);
-        tlsphOperators::internalForce<2>
+        correspondence::internalForce<2>
         (
-            b.pairs, b.corrGradW.data(), b.rev.data(), b.V.data(), P.data(),
-            f->data()
+            b.pairs, b.corrGradW().data(), b.V.data(), P.data(), f->data()
         );
         tlsphOperators::strainGradientForce<2>
         (
-            b.pairs, b.hessW.data(), b.rev.data(), T.data(), f->data()
+            b.pairs, b.hessW().data(), T.data(), f->data()
         );
     }
     return E;

@@ -7,13 +7,14 @@ Description
     from a coupled body's ghosts), and a particle thrown at a wall lattice
     turns at the distance where the force's potential equals its kinetic
     energy, never reaching the wall's surface, and leaves with the speed it
-    came with.
+    came with. The particle's relations follow it (geometry updated every
+    step, lists rebuilt when it moved by half their skin).
 
 \*---------------------------------------------------------------------------*/
 
 #include <gtest/gtest.h>
 #include "wallRepulsion.H"
-#include "cellLinkedList.H"
+#include "testHelpers.H"
 #include <cmath>
 
 using namespace Foam;
@@ -40,41 +41,78 @@ std::vector<double> floorLattice(const double dx, const label nRows)
 }
 
 
-//- A 2D context of particles xF (none of their own neighbours) with two
-//  ghost sources: the given wall and a coupled body
+//- A 2D context of particles xF with their own relation and two ghost
+//  sources: the given wall and a coupled body, searched within radius (a
+//  Wendland kernel's support) grown by a skin; x() the particles'
+//  positions, moved() after they moved
 struct twoSources
 {
-    cellLinkedList wallCells, bodyCells;
-    neighbourList own, toWall, toBody;
+    const double skin;
+    autoPtr<smoothingKernel> W;
+    meshlessTest::pairFixture fx;
     pairContext ctx;
+
+    //- The particles' positions at the last build of the lists
+    std::vector<double> xBuilt;
 
     twoSources
     (
         const std::vector<double>& xF,
         const std::vector<double>& xWall,
         const std::vector<double>& xBody,
-        const double radius
+        const double radius,
+        const double skin_ = 0
     )
     :
-        wallCells(2, radius),
-        bodyCells(2, radius)
+        skin(skin_),
+        W
+        (
+            meshlessTest::kernel
+            (
+                2, radius, "type wendlandC2; smoothingLengthRatio 0.5;"
+            )
+        ),
+        fx(2)
     {
-        const label n = label(xF.size())/2;
-        wallCells.build(xWall.data(), label(xWall.size())/2);
-        bodyCells.build(xBody.data(), label(xBody.size())/2);
-        toWall.build(wallCells, xF.data(), n, false);
-        toBody.build(bodyCells, xF.data(), n, false);
-        own.build(bodyCells, xF.data(), 0, false);
-        ctx.dim = 2;
-        ctx.n = n;
-        ctx.x = xF.data();
-        ctx.sources =
+        fx.addBody(xF, 0.0);
+        fx.addBody(xWall, 0.0);
+        fx.addBody(xBody, 0.0);
+        for (label b = 0; b < 3; ++b)
         {
-            {&own, xF.data(), nullptr},
-            {&toWall, xWall.data(), nullptr},
-            {&toBody, xBody.data(), nullptr}
-        };
+            fx.relate(0, b, *W, skin, neighbourRelation::separation);
+        }
+        xBuilt = xF;
+        ctx.dim = 2;
+        ctx.W = W.get();
+        ctx.n = fx.size(0);
+        ctx.x = fx.x(0).data();
+        ctx.sources = fx.sources(0);
         ctx.wallSource = {false, true, false};
+    }
+
+    double* x() { return fx.x(0).data(); }
+
+    //- The pair geometry at the particles' new positions, and the lists
+    //  rebuilt when a particle moved by half the skin since their build
+    void moved()
+    {
+        double d2 = 0;
+        for (size_t k = 0; k < xBuilt.size(); k += 2)
+        {
+            d2 = std::max
+            (
+                d2, sqr(x()[k] - xBuilt[k]) + sqr(x()[k + 1] - xBuilt[k + 1])
+            );
+        }
+        if (4*d2 >= sqr(skin*W->radius()))
+        {
+            fx.rebuild();
+            xBuilt.assign(x(), x() + xBuilt.size());
+        }
+        else
+        {
+            fx.updateGeometry();
+        }
     }
 };
 
@@ -111,6 +149,10 @@ TEST(wallRepulsion, onlyWallsRepelAndOnlyWithinRange)
     const std::vector<double> xWall = {-0.5*r0, 0, 10e-3, 0};
     const std::vector<double> xBody = {0, 0.5*r0};
     twoSources s(xF, xWall, xBody, 3e-3);
+    EXPECT_NEAR(s.W->radius(), 3e-3, 1e-15);
+    EXPECT_EQ(s.ctx.sources[0].rel->nPairs(), 0) << "own: 10 mm apart";
+    EXPECT_EQ(s.ctx.sources[1].rel->nPairs(), 2);
+    EXPECT_EQ(s.ctx.sources[2].rel->nPairs(), 1);
 
     std::vector<double> a(4, 0);
     const label nPairs = wallRepulsion::add(s.ctx, 2, r0, 12, 4, a.data());
@@ -145,13 +187,15 @@ TEST(wallRepulsion, particleThrownAtAFloorTurnsWherePotentialMatches)
     // Above a wall particle (only it within r0) and above a gap
     for (const double x0 : {0.0, 0.5*dx})
     {
-        std::vector<double> x = {x0, 0.5*dx}, u = {0, -v0}, a = {0, 0};
+        twoSources s({x0, 0.5*dx}, xWall, {1e3, 1e3}, 3*dx, 0.1);
+        double* x = s.x();
+        std::vector<double> u = {0, -v0}, a = {0, 0};
         const double dt = 2e-8;
         double yMin = x[1];
         const auto accel = [&]()
         {
             a = {0, 0};
-            twoSources s(x, xWall, {1e3, 1e3}, 3*dx);
+            s.moved();
             wallRepulsion::add(s.ctx, D, r0, p1, p2, a.data());
         };
         accel();
