@@ -7,8 +7,10 @@ validation scripts and tests (ParaView's reader converts to float32).
 read_cloud(case, time, body) returns {"id": [...], "positions": [[x,y,z],..],
 <field>: [...]} for the files of <case>/<time>/lagrangian/<body>/, ascii or
 binary (writeFormat binary: the arch of the file's header gives the sizes
-of labels and scalars).
+of labels and scalars); read_field and read_positions one file of it;
+speed_history a body's RMS and largest speed at each written time.
 """
+import math
 import os
 import re
 import struct
@@ -121,3 +123,15 @@ def read_positions(case, time, body):
     """Positions of a cloud ([x, y, z] each): always ascii, whatever the
     case's writeFormat."""
     return read_field(case, time, body, "positions")
+
+
+def speed_history(case, body):
+    """(time, RMS speed, largest speed) of a body at every written time
+    after the first, in the plane"""
+    out = []
+    for value, name in times(case)[1:]:
+        U = read_field(case, name, body, "U")
+        speeds = [math.hypot(u[0], u[1]) for u in U]
+        rms = math.sqrt(sum(s * s for s in speeds) / len(speeds))
+        out.append((value, rms, max(speeds)))
+    return out

@@ -1,25 +1,55 @@
-"""The stability checks of a fluid-structure run that has no measurement to
-compare with (BENCHMARKS: 'runs to the end, stable, no particle lost'),
-shared by the validation scripts of the FSI tutorials and the case tests.
+"""The stability checks of a run that has no measurement to compare with
+(BENCHMARKS: 'runs to the end, stable, no particle lost'), shared by the
+validation scripts of the FSI tutorials, the dam break and the case tests,
+and how they are reported.
 
-    from fsiChecks import stability_checks
-    for what, good in stability_checks(case, "gate", (0, 1.5), dx, scale):
-        ...
+    from fsiChecks import stability_checks, print_checks, check_rows
+    checks = stability_checks(case, "gate", (0, 1.5), dx, scale)
+    print_checks(checks)                # 'met: ...' / 'MISSED: ...'
+    lines += check_rows(checks)         # '| ... | met |'
 """
 import math
-import os
-import re
 
 from foamCloud import read_cloud, read_positions, times
-from foamMonitor import monitor_runs
+from foamDict import dictionary_entry
+from foamMonitor import monitor_rows, monitor_runs
 
 
 def end_time(case):
     """endTime of system/controlDict"""
-    m = re.search(r"^endTime\s+([0-9.eE+-]+);",
-                  open(os.path.join(case, "system", "controlDict")).read(),
-                  re.M)
-    return float(m.group(1))
+    return float(dictionary_entry(case, "endTime", "system/controlDict"))
+
+
+def verdict(good):
+    """How a check is reported: 'met' or 'MISSED'"""
+    return "met" if good else "MISSED"
+
+
+def print_checks(checks):
+    """Each check of [(what, met)] as a line 'met: what' or 'MISSED: what'"""
+    for what, good in checks:
+        print("%s: %s" % (verdict(good), what))
+
+
+def check_rows(checks):
+    """Each check of [(what, met)] as a row '| what | met |' of a
+    markdown table"""
+    return ["| %s | %s |" % (what, verdict(good)) for what, good in checks]
+
+
+def momentum_exchange(case, floor=None):
+    """Largest |F_fs + F_sf|/|F_fs| over the coupling's steps
+    (postProcessing/coupling/<start>/forces.dat, a run and its restarts):
+    the fluid's force on the (first) solid and the solid's force on the
+    fluid, summed from the fluid's side, in the plane. With floor, only the
+    steps whose force on the solid is larger than floor [N/m]"""
+    worst = 0.0
+    for r in monitor_rows(case, "coupling", "forces.dat")[1]:
+        size = math.hypot(r[1], r[2])
+        if floor is None or size > floor:
+            worst = max(worst, math.hypot(r[1] + r[4], r[2] + r[5])
+                        / max(size, 1e-30))
+    return worst
 
 
 def energy_total(case):

@@ -15,13 +15,12 @@ finer runs say (x/H = 1.299 at T = 0.525 for n = 57, 85 and 114, to
 import os
 import shutil
 import struct
-import subprocess
 import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(here), "lib"))
-from caseTest import CaseTest, project_dir, run, scratch, set_entry  # noqa
-from caseTest import table  # noqa: E402
+from caseTest import project_dir, run, run_parts, set_entry  # noqa: E402
+from foamMonitor import read_rows  # noqa: E402
 
 BENCH = os.path.join(project_dir, "benchmarks", "damBreakVof")
 H = 0.057
@@ -57,7 +56,7 @@ def front_of(work, name, n, alpha, binary):
                      out], work)
     if code != 0:
         return None, log
-    rows = table(out)
+    rows = read_rows(out)
     return rows[0][1], log
 
 
@@ -118,7 +117,7 @@ def check_run(t, work):
     t.check("front.py reads the run", code == 0, log)
     if code != 0:
         return
-    rows = table(out)
+    rows = read_rows(out)
     t.check("fronts at t = 0 and every 2.5 ms to 0.04 s (%d)" % len(rows),
             len(rows) == 17)
     t.check("the front starts at the column's edge (x/H = %.4f)"
@@ -132,7 +131,7 @@ def check_run(t, work):
             abs(T - 0.525) < 1e-3 and abs(x - 1.299) < 0.03)
 
 
-def check_variants(t):
+def check_variants(t, work):
     """result.py's reading of the front files' names"""
     sys.path.insert(0, BENCH)
     from result import key, variant
@@ -146,20 +145,12 @@ def check_variants(t):
         t.check_equal("result.py reads %s" % name, got, expected)
 
 
-def main():
-    t = CaseTest("damBreakVof")
-    work = scratch("damBreakVof")
-    try:
-        check_variants(t)
-        check_made_up(t, work)
-        if shutil.which("interFoam") is None:
-            t.check("interFoam on the PATH (etc/bashrc)", False)
-        else:
-            check_run(t, work)
-    finally:
-        shutil.rmtree(work, ignore_errors=True)
-    return t.finish()
-
+def check_interfoam_run(t, work):
+    if shutil.which("interFoam") is None:
+        t.check("interFoam on the PATH (etc/bashrc)", False)
+    else:
+        check_run(t, work)
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_parts("damBreakVof", check_variants, check_made_up,
+                       check_interfoam_run))

@@ -3,11 +3,14 @@
 (particleFoam: a kinematic block under gravity beside a fixed floor).
 
 - the run matches the exact discrete free fall; the log lists the active
-  effects, per-step times and the cost table;
+  effects, per-step times and the cost table; the run cost
+  (postProcessing/runCost) has the time of each model and effect and of
+  the writes, the particle-steps per second, and the run completed;
 - ParaView's reader (VTK's vtkOpenFOAMReader) sees every body with its
   particle count and fields, in ascii and in binary writeFormat;
 - restart: one run to t1 and a run to t1/2 restarted (startFrom latestTime)
-  to t1, both with an adaptive step, give the same particles to round-off;
+  to t1, both with an adaptive step, give the same particles to round-off
+  in as many steps (the run cost of each run);
 - purgeWrite keeps the last N times; vtp output is readable by VTK;
 - bad input stops with the file, the keyword and what was expected, and
   leaves every file of the case as it was;
@@ -15,17 +18,15 @@
   particle outside the scene's escapeBox).
 """
 import os
-import shutil
 import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(here), "lib"))
-from caseTest import (CaseTest, copy_case, project_dir, run,  # noqa: E402
-                      scratch, set_entry, snapshot)
+from caseTest import (copy_case, project_dir, run, run_parts,  # noqa: E402
+                      set_entry, snapshot)
 from readClouds import read_clouds  # noqa: E402
-
-sys.path.insert(0, os.path.join(project_dir, "etc", "python"))
 from foamCloud import read_cloud, times  # noqa: E402
+from foamMonitor import run_cost, run_costs  # noqa: E402
 
 TUTORIAL = os.path.join(project_dir, "tutorials/particleFoam/freeFall")
 
@@ -48,9 +49,16 @@ def test_tutorial(t, work):
     log = open(os.path.join(case, "log.particleFoam")).read()
     for words in ("effect gravity", "model kinematic", "model fixed",
                   "ExecutionTime", "ClockTime", "remaining ~",
-                  "Cost per model and effect", "drop: gravity",
-                  "drop: kinematic", "write", "Particle-steps per second"):
+                  "Cost per model and effect", "Particle-steps per second"):
         t.check("log shows '%s'" % words, words in log)
+    cost = run_cost(case)
+    for part in ("drop.gravity", "drop.kinematic", "write"):
+        t.check("run cost has the part %s" % part, part in cost["parts"],
+                str(sorted(cost["parts"])))
+    t.check("run cost: completed, %d steps of 400 + 250 particles at %.3g"
+            " particle-steps per second" % (cost["steps"], cost["rate"]),
+            cost["completed"] and cost["steps"] == 100
+            and cost["particles"] == 650 and cost["rate"] > 0, str(cost))
 
     clouds = read_clouds(case, 0.1)
     t.check_equal("reader sees the bodies", sorted(clouds), ["drop", "floor"])
@@ -81,8 +89,9 @@ def test_restart(t, work):
     code3, out3 = run(["particleFoam"], two)
     t.check("three runs succeed", code1 == code2 == code3 == 0,
             (out1 + out2 + out3)[-1500:])
-    t.check("the second part starts from 0.05",
-            "Create polyMesh for time = 0.05" in out3, out3[:1500])
+    starts = [float(r["startTime"]) for r in run_costs(two)]
+    t.check("the second part starts from 0.05 (run costs from %s)" % starts,
+            starts == [0, 0.05])
     a = read_cloud(one, "0.1", "drop")
     b = read_cloud(two, "0.1", "drop")
     t.check_equal("same fields after restart", sorted(a), sorted(b))
@@ -93,10 +102,8 @@ def test_restart(t, work):
             diff = max(diff, max(abs(p - q) for p, q in zip(u, v)))
     t.check("restart matches the uninterrupted run (max diff %.2e)" % diff,
             diff < 1e-12)
-    steps_one = out1.count("\nTime = ")
-    steps_two = out2.count("\nTime = ") + out3.count("\nTime = ")
-    t.check_equal("restart takes the same number of steps", steps_two,
-                  steps_one)
+    t.check_equal("restart takes the same number of steps",
+                  run_cost(two)["steps"], run_cost(one)["steps"])
     t.check("the adaptive run ends on endTime",
             os.path.isdir(os.path.join(one, "0.1")), str(os.listdir(one)))
 
@@ -240,20 +247,6 @@ def test_blow_up(t, work):
     t.check_equal("last good state intact", len(drop["positions"]), 400)
 
 
-def main():
-    t = CaseTest("sceneMachinery")
-    work = scratch("sceneMachinery")
-    try:
-        for test in (test_tutorial, test_restart, test_binary_and_purge,
-                     test_bad_input, test_blow_up):
-            try:
-                test(t, work)
-            except Exception as e:      # a crash is a failure, not a stop
-                t.check(test.__name__ + " ran", False, repr(e))
-    finally:
-        shutil.rmtree(work, ignore_errors=True)
-    return t.finish()
-
-
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_parts("sceneMachinery", test_tutorial, test_restart,
+                       test_binary_and_purge, test_bad_input, test_blow_up))

@@ -9,13 +9,11 @@ one. 2D: a disk (a cylinder along z through the mid-plane) against pi r^2.
 """
 import math
 import os
-import shutil
 import sys
-import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(
     os.path.abspath(__file__))), "lib"))
-from caseTest import CaseTest  # noqa: E402
+from caseTest import run_parts  # noqa: E402
 import seedCase  # noqa: E402
 
 DX = 0.001
@@ -169,16 +167,5 @@ def check_2d(t, work):
                 all(abs(p[2] - 0.0005) < 1e-9 for p in c["points"]))
 
 
-def main():
-    t = CaseTest("seedRegions")
-    work = tempfile.mkdtemp(prefix="seedRegions.")
-    try:
-        check_3d(t, work)
-        check_2d(t, work)
-    finally:
-        shutil.rmtree(work, ignore_errors=True)
-    return t.finish()
-
-
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_parts("seedRegions", check_3d, check_2d))

@@ -11,13 +11,11 @@ the file and keyword and leave no cloud on disk.
 """
 import math
 import os
-import shutil
 import subprocess
 import sys
-import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "lib"))
-from caseTest import CaseTest, project_dir  # noqa: E402
+from caseTest import copy_case, project_dir, run_parts  # noqa: E402
 from readClouds import read_clouds  # noqa: E402
 import seedCase  # noqa: E402
 
@@ -48,76 +46,68 @@ def open_tank_wall_count(nx, ny, layers):
     return layers * (ny + nx + ny) + 2 * quarter + 2 * quarter
 
 
-def main():
-    t = CaseTest("seededTank")
-    tutorial = os.path.join(project_dir, "tutorials/seedParticles/damBreakTank")
-    work = tempfile.mkdtemp(prefix="seededTank.")
-    case = os.path.join(work, "damBreakTank")
-    shutil.copytree(tutorial, case, ignore=shutil.ignore_patterns(
-        "0", "log.*", "*.foam", "polyMesh"))
-    try:
-        run = subprocess.run(["./Allrun"], cwd=case, capture_output=True,
-                             text=True)
-        t.check("Allrun succeeds", run.returncode == 0, run.stderr[-2000:])
-        if run.returncode != 0:
-            return t.finish()
-
-        clouds = read_clouds(case, 0)
-        t.check("reader sees the three clouds",
-                sorted(clouds) == ["obstacle", "walls", "water"],
-                str(sorted(clouds)))
-        water, obstacle = clouds.get("water"), clouds.get("obstacle")
-        walls = clouds.get("walls")
-        if not water or not obstacle or not walls:
-            return t.finish()
-
-        # 0.057 m column at 1 mm: 57 x 57; obstacle 6 mm x 40 mm at 0.5 mm
-        t.check_equal("water particles", water["particles"], 57 * 57)
-        t.check_equal("obstacle particles", obstacle["particles"], 12 * 80)
-        # Tank 0.228 x 0.114 m at 1 mm, 3 layers: 3 (114 + 228 + 114) + 32
-        t.check_equal("wall particles", walls["particles"],
-                      open_tank_wall_count(228, 114, 3))
-        expected = {"id", "volume", "mass", "rho", "nNeighbours", "kernelSum"}
-        for name, c in clouds.items():
-            t.check(name + " fields", expected <= set(c["arrays"]),
-                    str(sorted(c["arrays"])))
-        t.check("walls fields normal, wallDistance",
-                {"normal", "wallDistance"} <= set(walls["arrays"]),
-                str(sorted(walls["arrays"])))
-        if "wallDistance" in walls["arrays"]:
-            d = walls["arrays"]["wallDistance"]["range"]
-            t.check("wall distances from dx/2 to at most 3 dx",
-                    abs(d[0] - 0.0005) < 1e-9 and d[1] <= 0.003, str(d))
-        b = walls["bounds"]
-        t.check("walls around the tank, the top open",
-                abs(b[0] + 0.0025) < 1e-7 and abs(b[1] - 0.2305) < 1e-7
-                and abs(b[2] + 0.0025) < 1e-7 and b[3] < 0.114 + 0.003,
-                str(b))
-        t.check_close("water mass per particle",
-                      water["arrays"]["mass"]["range"][1], 1000 * 1e-6, 1e-6)
-        t.check_equal("water ids 0..n-1", water["arrays"]["id"]["range"],
-                      [0.0, 57 * 57 - 1.0])
-        b = water["bounds"]
-        t.check("water inside the column",
-                b[0] > 0 and b[1] < 0.057 and b[2] > 0 and b[3] < 0.057,
-                str(b))
-
-        # A lattice at radius 2.6 dx has 20 neighbours in 2D (the walls are
-        # 3 layers thin: fewer)
-        for name, c in (("water", water), ("obstacle", obstacle)):
-            t.check_equal(name + " interior neighbours",
-                          c["arrays"]["nNeighbours"]["range"][1], 20.0)
-            t.check_close(name + " interior kernel sum",
-                          c["arrays"]["kernelSum"]["range"][1],
-                          wendland_lattice_sum(), 1e-6)
-
-        bad_inputs(t, tutorial, work)
-    finally:
-        shutil.rmtree(work, ignore_errors=True)
-    return t.finish()
+TUTORIAL = os.path.join(project_dir, "tutorials/seedParticles/damBreakTank")
 
 
-def bad_inputs(t, tutorial, work):
+def seeded_tank(t, work):
+    case = copy_case(TUTORIAL, os.path.join(work, "damBreakTank"))
+    run = subprocess.run(["./Allrun"], cwd=case, capture_output=True,
+                         text=True)
+    t.check("Allrun succeeds", run.returncode == 0, run.stderr[-2000:])
+    if run.returncode != 0:
+        return
+
+    clouds = read_clouds(case, 0)
+    t.check("reader sees the three clouds",
+            sorted(clouds) == ["obstacle", "walls", "water"],
+            str(sorted(clouds)))
+    water, obstacle = clouds.get("water"), clouds.get("obstacle")
+    walls = clouds.get("walls")
+    if not water or not obstacle or not walls:
+        return
+
+    # 0.057 m column at 1 mm: 57 x 57; obstacle 6 mm x 40 mm at 0.5 mm
+    t.check_equal("water particles", water["particles"], 57 * 57)
+    t.check_equal("obstacle particles", obstacle["particles"], 12 * 80)
+    # Tank 0.228 x 0.114 m at 1 mm, 3 layers: 3 (114 + 228 + 114) + 32
+    t.check_equal("wall particles", walls["particles"],
+                  open_tank_wall_count(228, 114, 3))
+    expected = {"id", "volume", "mass", "rho", "nNeighbours", "kernelSum"}
+    for name, c in clouds.items():
+        t.check(name + " fields", expected <= set(c["arrays"]),
+                str(sorted(c["arrays"])))
+    t.check("walls fields normal, wallDistance",
+            {"normal", "wallDistance"} <= set(walls["arrays"]),
+            str(sorted(walls["arrays"])))
+    if "wallDistance" in walls["arrays"]:
+        d = walls["arrays"]["wallDistance"]["range"]
+        t.check("wall distances from dx/2 to at most 3 dx",
+                abs(d[0] - 0.0005) < 1e-9 and d[1] <= 0.003, str(d))
+    b = walls["bounds"]
+    t.check("walls around the tank, the top open",
+            abs(b[0] + 0.0025) < 1e-7 and abs(b[1] - 0.2305) < 1e-7
+            and abs(b[2] + 0.0025) < 1e-7 and b[3] < 0.114 + 0.003,
+            str(b))
+    t.check_close("water mass per particle",
+                  water["arrays"]["mass"]["range"][1], 1000 * 1e-6, 1e-6)
+    t.check_equal("water ids 0..n-1", water["arrays"]["id"]["range"],
+                  [0.0, 57 * 57 - 1.0])
+    b = water["bounds"]
+    t.check("water inside the column",
+            b[0] > 0 and b[1] < 0.057 and b[2] > 0 and b[3] < 0.057,
+            str(b))
+
+    # A lattice at radius 2.6 dx has 20 neighbours in 2D (the walls are
+    # 3 layers thin: fewer)
+    for name, c in (("water", water), ("obstacle", obstacle)):
+        t.check_equal(name + " interior neighbours",
+                      c["arrays"]["nNeighbours"]["range"][1], 20.0)
+        t.check_close(name + " interior kernel sum",
+                      c["arrays"]["kernelSum"]["range"][1],
+                      wendland_lattice_sum(), 1e-6)
+
+
+def bad_inputs(t, work):
     """Each bad dictionary fails with file + keyword, and writes nothing."""
     cases = {
         "negative spacing": ("spacing     0.001;", "spacing     -0.001;",
@@ -176,9 +166,7 @@ def bad_inputs(t, tutorial, work):
         "empty region": ("max (0.12 0.04 1)", "max (0.1141 0.00001 1)",
                          ["obstacle", "no particle"]),
     }
-    base = os.path.join(work, "bad")
-    shutil.copytree(tutorial, base, ignore=shutil.ignore_patterns(
-        "0", "log.*", "*.foam", "polyMesh"))
+    base = copy_case(TUTORIAL, os.path.join(work, "bad"))
     env = os.environ.copy()
     subprocess.run(["blockMesh"], cwd=base, capture_output=True, env=env,
                    check=True)
@@ -204,4 +192,4 @@ def bad_inputs(t, tutorial, work):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_parts("seededTank", seeded_tank, bad_inputs))

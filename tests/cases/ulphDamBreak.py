@@ -17,30 +17,31 @@ is at 3H when the experiment's is; the water carries no tension
 this spacing in four of six runs that differed only in maxCo or the write
 interval, with alpha 0.05); the clouds read
 through ParaView's reader; the log shows the cost table and no viscosity
-effect (not named in the case).
+effect (not named in the case); the run cost (postProcessing/runCost) has
+the time of the named effects and none of the viscosity, and the run
+completed.
 """
 import os
 import re
-import shutil
 import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(here), "lib"))
-from caseTest import CaseTest, copy_case, project_dir, run, scratch  # noqa
+from caseTest import project_dir, run_parts, run_tutorial  # noqa: E402
 from readClouds import read_clouds  # noqa: E402
-sys.path.insert(0, os.path.join(project_dir, "etc", "python"))
 from foamCloud import read_cloud  # noqa: E402
+from foamMonitor import run_cost  # noqa: E402
 
-TUTORIAL = os.path.join(project_dir, "tutorials/ulphPdFoam/damBreak")
+TUTORIAL = "tutorials/ulphPdFoam/damBreak"
 
 
-def check_fill_front(t):
+def check_fill_front(t, work):
     """validate.py's water-fraction front on a block of 40 x 10 particles at
     (i + 1/2, j + 1/2) dx: the block's edge (40 dx, to the dx/4 sampling),
     unmoved by a lone particle 3 dx ahead; a tongue one particle thick
     (water fraction dx / (sqrt(pi) h) = 0.47 at most) does not count, one
     three particles thick does to its edge"""
-    sys.path.insert(0, os.path.join(TUTORIAL, "validation"))
+    sys.path.insert(0, os.path.join(project_dir, TUTORIAL, "validation"))
     from validate import fill_front
     dx = 0.001
     block = [((i + 0.5) * dx, (j + 0.5) * dx, 0.0)
@@ -75,56 +76,54 @@ def check_binary_reader(t, case, clouds):
                 len(a) == len(b) == 841 and worst < 1e-6)
 
 
-def main():
-    t = CaseTest("ulphDamBreak")
-    check_fill_front(t)
-    work = scratch("ulphDamBreak")
-    try:
-        case = copy_case(TUTORIAL, os.path.join(work, "damBreak"))
-        code, out = run(["./Allrun", "-dx", "0.002"], case)
-        t.check("Allrun -dx 0.002 succeeds", code == 0, out[-2000:])
-        m = re.search(r"RMS error ([0-9.]+) H .*deepest penetration "
-                      r"([0-9.]+) dx, energy rise ([0-9.]+) %", out)
-        t.check("validation ran", m is not None, out[-1500:])
-        if m:
-            rms, depth = float(m.group(1)), float(m.group(2))
-            rise = float(m.group(3))
-            t.check("front RMS error against the experiment %.4f H < "
-                    "0.15 H" % rms, rms < 0.15)
-            t.check("no particle in a wall at any written time (%.2f dx <"
-                    " 0.5 dx)" % depth, depth < 0.5)
-            t.check("total energy rise %.3f %% < 0.5 %%" % rise, rise < 0.5)
-        m = re.search(r"Navier-Stokes front of interFoam without surface "
-                      r"tension .*? RMS ([0-9.]+) H \(largest x\)", out)
-        t.check("front RMS difference from the Navier-Stokes front %s < "
-                "0.3 H" % (m.group(1) + " H" if m else "(not reported)"),
-                m is not None and float(m.group(1)) < 0.3, out[-1500:])
-        rows = re.findall(r"\| 1\.929 \| 3\.001 \| ([0-9.]+) \|", out)
-        t.check("front at x = 3H by T = 1.93 (%s)" % rows,
-                bool(rows) and abs(float(rows[0]) - 3.0) < 0.3)
-        clouds = read_clouds(case, 0.6, per_particle=True)
-        check_binary_reader(t, case, clouds)
-        t.check_equal("reader sees water and walls", sorted(clouds),
-                      ["walls", "water"])
-        water = clouds.get("water", {"particles": 0, "arrays": {}})
-        t.check_equal("reader: water particles (binary output)",
-                      water["particles"], 29 * 29)
-        t.check("reader: water fields", {"U", "p", "rho", "mass", "id"}
-                <= set(water["arrays"]), str(sorted(water["arrays"])))
-        if "p" in water["arrays"]:
-            pmin = water["arrays"]["p"]["range"][0]
-            t.check("no tension in the water at the end (p >= 0: %g Pa)"
-                    % pmin, pmin >= 0)
-        log = open(os.path.join(case, "log.ulphPdFoam")).read()
-        for words in ("Cost per model and effect", "water: densityFilter",
-                      "water: artificialViscosity", "water: wallRepulsion",
-                      "End"):
-            t.check("log shows '%s'" % words, words in log)
-        t.check("viscosity not constructed", "effect viscosity" not in log)
-    finally:
-        shutil.rmtree(work, ignore_errors=True)
-    return t.finish()
+def dam_break(t, work):
+    case, code, out = run_tutorial(t, TUTORIAL, work, "damBreak",
+                                   ("-dx", "0.002"))
+    m = re.search(r"RMS error ([0-9.]+) H .*deepest penetration "
+                  r"([0-9.]+) dx, energy rise ([0-9.]+) %", out)
+    t.check("validation ran", m is not None, out[-1500:])
+    if m:
+        rms, depth = float(m.group(1)), float(m.group(2))
+        rise = float(m.group(3))
+        t.check("front RMS error against the experiment %.4f H < "
+                "0.15 H" % rms, rms < 0.15)
+        t.check("no particle in a wall at any written time (%.2f dx <"
+                " 0.5 dx)" % depth, depth < 0.5)
+        t.check("total energy rise %.3f %% < 0.5 %%" % rise, rise < 0.5)
+    m = re.search(r"Navier-Stokes front of interFoam without surface "
+                  r"tension .*? RMS ([0-9.]+) H \(largest x\)", out)
+    t.check("front RMS difference from the Navier-Stokes front %s < "
+            "0.3 H" % (m.group(1) + " H" if m else "(not reported)"),
+            m is not None and float(m.group(1)) < 0.3, out[-1500:])
+    rows = re.findall(r"\| 1\.929 \| 3\.001 \| ([0-9.]+) \|", out)
+    t.check("front at x = 3H by T = 1.93 (%s)" % rows,
+            bool(rows) and abs(float(rows[0]) - 3.0) < 0.3)
+    clouds = read_clouds(case, 0.6, per_particle=True)
+    check_binary_reader(t, case, clouds)
+    t.check_equal("reader sees water and walls", sorted(clouds),
+                  ["walls", "water"])
+    water = clouds.get("water", {"particles": 0, "arrays": {}})
+    t.check_equal("reader: water particles (binary output)",
+                  water["particles"], 29 * 29)
+    t.check("reader: water fields", {"U", "p", "rho", "mass", "id"}
+            <= set(water["arrays"]), str(sorted(water["arrays"])))
+    if "p" in water["arrays"]:
+        pmin = water["arrays"]["p"]["range"][0]
+        t.check("no tension in the water at the end (p >= 0: %g Pa)"
+                % pmin, pmin >= 0)
+    log = open(os.path.join(case, "log.ulphPdFoam")).read()
+    for words in ("Cost per model and effect", "End"):
+        t.check("log shows '%s'" % words, words in log)
+    t.check("viscosity not constructed", "effect viscosity" not in log)
+    cost = run_cost(case)
+    for part in ("water.densityFilter", "water.artificialViscosity",
+                 "water.wallRepulsion"):
+        t.check("run cost has the part %s" % part, part in cost["parts"],
+                str(sorted(cost["parts"])))
+    t.check("run cost: no viscosity part, the run completed",
+            "water.viscosity" not in cost["parts"] and cost["completed"],
+            str(sorted(cost["parts"])))
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_parts("ulphDamBreak", check_fill_front, dam_break))

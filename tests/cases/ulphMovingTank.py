@@ -18,14 +18,11 @@ water stays on the tank's side of its bottom.
 """
 import math
 import os
-import shutil
 import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(here), "lib"))
-from caseTest import (CaseTest, copy_case, project_dir, run,  # noqa: E402
-                      scratch, set_entry)
-sys.path.insert(0, os.path.join(project_dir, "etc", "python"))
+from caseTest import copy_case, run_parts, run_steps, set_entry  # noqa: E402
 from foamCloud import read_cloud, times  # noqa: E402
 
 A, W = 0.01, 4.0
@@ -44,12 +41,7 @@ def moving_case(t, work, name, motion):
     open(props, "w").write(text)
     set_entry(case, "system/controlDict", "endTime", "%.10f" % T_END)
     set_entry(case, "system/controlDict", "writeInterval", 0.1)
-    for cmd in (["blockMesh"], ["seedParticles"], ["ulphPdFoam"]):
-        code, out = run(cmd, case)
-        t.check(name + ": " + cmd[0] + " succeeds", code == 0, out[-1500:])
-        if code != 0:
-            return None
-    return case
+    return case if run_steps(t, case, label=name + ": ")[0] else None
 
 
 def rolling(t, work):
@@ -94,11 +86,8 @@ def rolling(t, work):
             % depth, depth < 0)
 
 
-def main():
-    t = CaseTest("ulphMovingTank")
-    work = scratch("ulphMovingTank")
-    try:
-        case = moving_case(t, work, "swaying", """        {
+def swaying(t, work):
+    case = moving_case(t, work, "swaying", """        {
             solidBodyMotionFunction oscillatingLinearMotion;
             oscillatingLinearMotionCoeffs
             {
@@ -106,40 +95,36 @@ def main():
                 omega       %g;
             }
         }""" % (A, W))
-        if not case:
-            return t.finish()
+    if not case:
+        return
 
-        t_end, last = times(case)[-1]
-        t.check_close("ran to a quarter period", t_end, T_END, 1e-5)
-        d = A * math.sin(W * t_end)
-        v = A * W * math.cos(W * t_end)
+    t_end, last = times(case)[-1]
+    t.check_close("ran to a quarter period", t_end, T_END, 1e-5)
+    d = A * math.sin(W * t_end)
+    v = A * W * math.cos(W * t_end)
 
-        wall0 = read_cloud(case, "0", "tank")
-        wall1 = read_cloud(case, last, "tank")
-        p0 = dict(zip(wall0["id"], wall0["positions"]))
-        p1 = dict(zip(wall1["id"], wall1["positions"]))
-        err = max(max(abs(p1[i][0] - p0[i][0] - d), abs(p1[i][1] - p0[i][1]))
-                  for i in p0)
-        t.check("walls where the motion puts them (error %.1e m)" % err,
-                err < 1e-9)
-        uerr = max(max(abs(u[0] - v), abs(u[1])) for u in wall1["U"])
-        t.check("wall velocity A w cos(w t) (error %.1e m/s)" % uerr,
-                uerr < 1e-6 * A * W)
+    wall0 = read_cloud(case, "0", "tank")
+    wall1 = read_cloud(case, last, "tank")
+    p0 = dict(zip(wall0["id"], wall0["positions"]))
+    p1 = dict(zip(wall1["id"], wall1["positions"]))
+    err = max(max(abs(p1[i][0] - p0[i][0] - d), abs(p1[i][1] - p0[i][1]))
+              for i in p0)
+    t.check("walls where the motion puts them (error %.1e m)" % err,
+            err < 1e-9)
+    uerr = max(max(abs(u[0] - v), abs(u[1])) for u in wall1["U"])
+    t.check("wall velocity A w cos(w t) (error %.1e m/s)" % uerr,
+            uerr < 1e-6 * A * W)
 
-        w0 = read_cloud(case, "0", "water")
-        w1 = read_cloud(case, last, "water")
-        inside = all(d <= x[0] <= 0.2 + d and x[1] >= 0
-                     for x in w1["positions"])
-        t.check("water inside the moving tank", inside)
-        cx0 = sum(x[0] for x in w0["positions"]) / len(w0["positions"])
-        cx1 = sum(x[0] for x in w1["positions"]) / len(w1["positions"])
-        t.check("water carried with the tank: centroid moved %.4f m, tank"
-                " %.4f m" % (cx1 - cx0, d), abs(cx1 - cx0 - d) < 0.3 * A)
-        rolling(t, work)
-    finally:
-        shutil.rmtree(work, ignore_errors=True)
-    return t.finish()
+    w0 = read_cloud(case, "0", "water")
+    w1 = read_cloud(case, last, "water")
+    inside = all(d <= x[0] <= 0.2 + d and x[1] >= 0
+                 for x in w1["positions"])
+    t.check("water inside the moving tank", inside)
+    cx0 = sum(x[0] for x in w0["positions"]) / len(w0["positions"])
+    cx1 = sum(x[0] for x in w1["positions"]) / len(w1["positions"])
+    t.check("water carried with the tank: centroid moved %.4f m, tank"
+            " %.4f m" % (cx1 - cx0, d), abs(cx1 - cx0 - d) < 0.3 * A)
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_parts("ulphMovingTank", swaying, rolling))

@@ -19,12 +19,12 @@ elasticObstacle and elasticGate:
   of the water's initial potential energy, the solid's particle-scale
   velocity noise below 0.1 sqrt(g H) (etc/python/fsiChecks.py).
 sluiceGate (paper 4.5; 3.5 mm, the gate 2 particles thick, to 0.3 s):
-the momentum exchange and stability checks above, the log names the wall
-repulsion of thin layers, and the gate opens (its
-free end moves downstream by more than 2 spacings).
+the momentum exchange and stability checks above, the run cost has the
+time of the walls' repulsion of thin layers, and the gate opens (its free
+end moves downstream by more than 2 spacings).
 Coupled restart: elasticGate to 0.06 s in one go and stopped at 0.03 s
 and restarted end at the same particles (RESTART_TOLERANCE) in as many
-steps.
+steps (the run cost of the two runs).
 ParaView's reader loads the last time of obstacleFracture (with the damage
 and plastic strain fields) and sluiceGate.
 obstacleFracture: its validation's stability checks hold (fsiChecks: runs
@@ -35,16 +35,15 @@ bonds broke is printed only (at this spacing none do).
 import math
 import os
 import re
-import shutil
 import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(here), "lib"))
-from caseTest import (CaseTest, copy_case, project_dir, run,  # noqa: E402
-                      scratch, set_entry, table)
-sys.path.insert(0, os.path.join(project_dir, "etc", "python"))
-from fsiChecks import stability_checks  # noqa: E402
+from caseTest import (copy_case, project_dir, run, run_parts,  # noqa: E402
+                      run_steps, run_tutorial, set_entry)
+from fsiChecks import momentum_exchange, stability_checks  # noqa: E402
 from foamCloud import read_positions, times  # noqa: E402
+from foamMonitor import run_cost  # noqa: E402
 from readClouds import read_clouds  # noqa: E402
 
 # The sluice gate's run: past the water's arrival (about 0.2 s) and the
@@ -60,14 +59,8 @@ FIRST_PEAK = ((0.030, 0.060), (0.19, 0.28))
 
 
 def prepare(t, name, work, dx, end):
-    src = os.path.join(project_dir, "tutorials", "ulphPdFoam", name)
-    case = copy_case(src, os.path.join(work, name),
-                     stored_results=False)
-    set_entry(case, "system/controlDict", "endTime", end)
-    code, out = run(["./Allrun", "-dx", str(dx)], case)
-    t.check("%s: Allrun -dx %g to %g s succeeds" % (name, dx, end),
-            code == 0, out[-2000:])
-    return case, code, out
+    return run_tutorial(t, "tutorials/ulphPdFoam/" + name, work, name,
+                        ("-dx", "%g" % dx), end)
 
 
 def stability(t, case, solid, tank, dx, energy_scale, depth):
@@ -75,11 +68,7 @@ def stability(t, case, solid, tank, dx, energy_scale, depth):
     particle counts, water in the tank and not in the solid, energy, the
     solid's velocity noise below 0.1 sqrt(g depth))"""
     name = os.path.basename(case)
-    forces = table(os.path.join(case, "postProcessing", "coupling", "0",
-                                "forces.dat"))
-    worst = max(math.hypot(r[1] + r[4], r[2] + r[5])
-                / max(math.hypot(r[1], r[2]), 1e-30) for r in forces
-                if math.hypot(r[1], r[2]) > 1e-6)
+    worst = momentum_exchange(case, floor=1e-6)
     t.check("%s: fluid-on-solid + solid-on-fluid = 0 (worst %.1e of the"
             " force)" % (name, worst), worst < 1e-9)
 
@@ -157,9 +146,10 @@ def sluice_gate(t, work):
     stability(t, case, "gate", (0, 1.5), 0.0035,
               1000 * 9.81 * 0.2 ** 2 * 0.5 / 2, 0.2)
     reader_sees(t, case, "gate", ("U", "p"))
-    log = open(os.path.join(case, "log.ulphPdFoam")).read()
-    t.check("sluiceGate: the log lists the walls' repulsion of thin layers",
-            "effect wallRepulsion" in log)
+    parts = run_cost(case)["parts"]
+    t.check("sluiceGate: the run cost has the walls' repulsion of thin"
+            " layers (water.wallRepulsion)", "water.wallRepulsion" in parts,
+            str(sorted(parts)))
     m = re.search(r"^(met|MISSED): the gate opens.*$", out, re.M)
     t.check("sluiceGate: " + (m.group(0) if m else "validation printed"
                               " whether the gate opens"),
@@ -179,20 +169,16 @@ def coupled_restart(t, work):
             f.write("dx 0.0025;\n")
         set_entry(case, "system/controlDict", "writeInterval", 0.03)
         set_entry(case, "system/controlDict", "endTime", end)
-        outs = [run([app], case) for app in ("blockMesh", "seedParticles",
-                                              "ulphPdFoam")]
-        cases.append((case, outs))
-    two = cases[1][0]
+        if not run_steps(t, case, label="coupled restart: %s: " % name)[0]:
+            return
+        cases.append(case)
+    one, two = cases
     set_entry(two, "system/controlDict", "startFrom", "latestTime")
     set_entry(two, "system/controlDict", "endTime", 0.06)
-    rest = run(["ulphPdFoam"], two)
-    outs = cases[0][1] + cases[1][1] + [rest]
-    t.check("coupled restart: the runs succeed",
-            all(code == 0 for code, _ in outs),
-            "".join(out for _, out in outs)[-2000:])
-    if not all(code == 0 for code, _ in outs):
+    code, out = run(["ulphPdFoam"], two)
+    t.check("coupled restart: the restart succeeds", code == 0, out[-2000:])
+    if code != 0:
         return
-    one = cases[0][0]
     diff = 0.0
     for body in ("water", "gate"):
         a = read_positions(one, "0.06", body)
@@ -201,24 +187,12 @@ def coupled_restart(t, work):
                              for u, v in zip(a, b)])
     t.check("coupled restart ends where the uninterrupted run does (max"
             " difference %.1e m)" % diff, diff < RESTART_TOLERANCE)
-    steps = [out.count("\nTime = ") for _, out in (outs[2], outs[5], rest)]
-    t.check_equal("coupled restart takes the same number of steps",
-                  steps[1] + steps[2], steps[0])
-
-
-def main():
-    t = CaseTest("ulphPdFsi")
-    work = scratch("ulphPdFsi")
-    try:
-        elastic_obstacle(t, work)
-        obstacle_fracture(t, work)
-        elastic_gate(t, work)
-        sluice_gate(t, work)
-        coupled_restart(t, work)
-    finally:
-        shutil.rmtree(work, ignore_errors=True)
-    return t.finish()
+    split, whole = run_cost(two), run_cost(one)
+    t.check("coupled restart takes the same number of steps (%d in %d runs,"
+            " %d in one)" % (split["steps"], split["runs"], whole["steps"]),
+            split["runs"] == 2 and split["steps"] == whole["steps"])
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_parts("ulphPdFsi", elastic_obstacle, obstacle_fracture,
+                       elastic_gate, sluice_gate, coupled_restart))

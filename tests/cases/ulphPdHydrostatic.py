@@ -10,79 +10,77 @@ ghost walls left, right and under the plate. 0.5 s. Checks:
 - momentum exchange: per step the fluid's force on the plate and the
   plate's force on the fluid (summed from the fluid's side over its own
   neighbour lists) cancel to 1e-9 of their size;
-- the log names the coupling and the solid sub-steps per fluid step;
+- the log names the coupling; the run cost (postProcessing/runCost) has
+  the coupling's solid sub-steps per fluid step, the most and the mean of
+  those the coupling wrote for each step (forces.dat), more than one at
+  every step;
 - stability: no NaN (the solver would stop), no particle lost, no fluid
   particle below the plate's top, total energy (fluid kinetic + potential,
   plate kinetic + strain + potential) not growing above its start value
   by more than 1e-3 of the column's potential energy rho g H^2 W/2.
 """
-import math
 import os
-import shutil
 import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(here), "lib"))
-from caseTest import CaseTest, copy_case, run, scratch, table  # noqa: E402
-from caseTest import project_dir  # noqa: E402
-sys.path.insert(0, os.path.join(project_dir, "etc", "python"))
+from caseTest import copy_case, run_parts, run_steps  # noqa: E402
 from foamCloud import read_cloud, times  # noqa: E402
+from foamMonitor import monitor_rows, run_cost  # noqa: E402
+from fsiChecks import energy_total, momentum_exchange  # noqa: E402
 
 H, W, DX, G, RHO = 0.1, 0.2, 0.005, 9.81, 1000.0
 
 
-def main():
-    t = CaseTest("ulphPdHydrostatic")
-    work = scratch("ulphPdHydrostatic")
-    try:
-        case = copy_case(os.path.join(here, "ulphPdHydrostatic"),
-                         os.path.join(work, "case"))
-        for cmd in (["blockMesh"], ["seedParticles"], ["ulphPdFoam"]):
-            code, out = run(cmd, case)
-            t.check(cmd[0] + " succeeds", code == 0, out[-1500:])
-            if code != 0:
-                return t.finish()
-        t.check("log names the coupling",
-                "coupling ulphPd: fluid water, solids (plate)" in out)
-        t.check("log reports the solid sub-steps per fluid step",
-                "solid sub-steps per fluid step" in out)
+def hydrostatic(t, work):
+    case = copy_case(os.path.join(here, "ulphPdHydrostatic"),
+                     os.path.join(work, "case"))
+    ok, out = run_steps(t, case)
+    if not ok:
+        return
+    t.check("log names the coupling",
+            "coupling ulphPd: fluid water, solids (plate)" in out)
 
-        forces = table(os.path.join(case, "postProcessing", "coupling", "0",
-                                    "forces.dat"))
-        t.check("forces written every step", len(forces) > 1000)
-        late = [r for r in forces if r[0] >= 0.1]
-        mean = sum(r[2] for r in late) / len(late)
-        expected = -RHO * G * H * W
-        t.check_close("mean vertical force on the plate (0.1-0.5 s) %.2f N/m"
-                      " vs -rho g H W = %.2f N/m" % (mean, expected),
-                      mean, expected, 0.03)
-        worst = max(math.hypot(r[1] + r[4], r[2] + r[5])
-                    / max(math.hypot(r[1], r[2]), 1e-30) for r in forces)
-        t.check("fluid-on-solid + solid-on-fluid = 0 (worst %.1e of the"
-                " force)" % worst, worst < 1e-9)
-        t.check("solid sub-steps > 1 (E = 100 MPa is stiffer than the"
-                " water's c0)", min(r[7] for r in forces) > 1)
+    forces = monitor_rows(case, "coupling", "forces.dat")[1]
+    t.check("forces written every step", len(forces) > 1000)
+    late = [r for r in forces if r[0] >= 0.1]
+    mean = sum(r[2] for r in late) / len(late)
+    expected = -RHO * G * H * W
+    t.check_close("mean vertical force on the plate (0.1-0.5 s) %.2f N/m"
+                  " vs -rho g H W = %.2f N/m" % (mean, expected),
+                  mean, expected, 0.03)
+    worst = momentum_exchange(case)
+    t.check("fluid-on-solid + solid-on-fluid = 0 (worst %.1e of the"
+            " force)" % worst, worst < 1e-9)
+    sub = [r[7] for r in forces]
+    t.check("solid sub-steps > 1 (E = 100 MPa is stiffer than the"
+            " water's c0)", min(sub) > 1)
+    cost = run_cost(case)
+    coupling = cost["subSteps"].get("coupling")
+    t.check("run cost reports the coupling's solid sub-steps per fluid"
+            " step: %s, the most and the mean of forces.dat's (%d, %.4g)"
+            % (coupling, max(sub), sum(sub) / len(sub)),
+            coupling is not None and coupling["most"] == max(sub)
+            and abs(coupling["mean"] - sum(sub) / len(sub))
+            <= 1e-5 * coupling["mean"]
+            and cost["steps"] == len(forces))
 
-        t_end, last = times(case)[-1]
-        t.check_close("ran to 0.5 s", t_end, 0.5, 1e-9)
-        water = read_cloud(case, last, "water")["positions"]
-        plate = read_cloud(case, last, "plate")["positions"]
-        t.check_equal("no fluid particle lost", len(water), 40 * 20)
-        t.check_equal("no plate particle lost", len(plate), 40 * 4)
-        lowest = min(x[1] for x in water)
-        t.check("no fluid particle inside the plate (lowest at %.4f m)"
-                % lowest, lowest > 0)
+    t_end, last = times(case)[-1]
+    t.check_close("ran to 0.5 s", t_end, 0.5, 1e-9)
+    water = read_cloud(case, last, "water")["positions"]
+    plate = read_cloud(case, last, "plate")["positions"]
+    t.check_equal("no fluid particle lost", len(water), 40 * 20)
+    t.check_equal("no plate particle lost", len(plate), 40 * 4)
+    lowest = min(x[1] for x in water)
+    t.check("no fluid particle inside the plate (lowest at %.4f m)"
+            % lowest, lowest > 0)
 
-        energy = table(os.path.join(case, "postProcessing", "energy", "0",
-                                    "energy.dat"))
-        scale = 0.5 * RHO * G * H * H * W
-        growth = max(r[-1] for r in energy) - energy[0][-1]
-        t.check("total energy not growing (%.2e J <= %.2e J)"
-                % (growth, 1e-3 * scale), growth <= 1e-3 * scale)
-    finally:
-        shutil.rmtree(work, ignore_errors=True)
-    return t.finish()
+    total = energy_total(case)
+    scale = 0.5 * RHO * G * H * H * W
+    growth = max(total) - total[0]
+    t.check("total energy not growing (%.2e J <= %.2e J)"
+            % (growth, 1e-3 * scale), growth <= 1e-3 * scale)
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_parts("ulphPdHydrostatic", hydrostatic))

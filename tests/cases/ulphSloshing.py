@@ -11,43 +11,30 @@ for the paper's 0.01 m, see the tutorial's validation/result.md).
 """
 import os
 import re
-import shutil
 import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(here), "lib"))
-from caseTest import (CaseTest, copy_case, project_dir, run,  # noqa: E402
-                      scratch, set_entry)
-sys.path.insert(0, os.path.join(project_dir, "etc", "python"))
+from caseTest import run_parts, run_tutorial  # noqa: E402
 from swayChecks import check_sway  # noqa: E402
 from swayTank import SwayTank  # noqa: E402
 
-TUTORIAL = os.path.join(project_dir, "tutorials/ulphPdFoam/sloshingTank")
+TUTORIAL = "tutorials/ulphPdFoam/sloshingTank"
 T = 1.875
 TANK = SwayTank(length=1.73, depth=0.5, amplitude=0.032, period=T)
 
 
-def main():
-    t = CaseTest("ulphSloshing")
-    work = scratch("ulphSloshing")
-    try:
-        case = copy_case(TUTORIAL, os.path.join(work, "sloshingTank"),
-                         stored_results=False)
-        set_entry(case, "system/controlDict", "endTime", 2 * T)
-        code, out = run(["./Allrun", "-dx", "0.04"], case)
-        t.check("Allrun -dx 0.04 succeeds", code == 0, out[-2000:])
-        m = re.search(r"crest phase error ([0-9.]+) %", out)
-        t.check("validation ran", m is not None, out[-1500:])
-        if m:
-            phase = float(m.group(1))
-            t.check("crest phase error %.2f %% < 5 %% of T" % phase,
-                    phase < 5)
+def sloshing(t, work):
+    case, code, out = run_tutorial(t, TUTORIAL, work, "sloshingTank",
+                                   ("-dx", "0.04"), 2 * T)
+    m = re.search(r"crest phase error ([0-9.]+) %", out)
+    t.check("validation ran", m is not None, out[-1500:])
+    if m:
+        phase = float(m.group(1))
+        t.check("crest phase error %.2f %% < 5 %% of T" % phase, phase < 5)
 
-        check_sway(t, case, TANK, height=1.15)
-    finally:
-        shutil.rmtree(work, ignore_errors=True)
-    return t.finish()
+    check_sway(t, case, TANK, height=1.15)
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_parts("ulphSloshing", sloshing))

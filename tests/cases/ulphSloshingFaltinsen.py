@@ -14,52 +14,40 @@ the paper's 0.01 m over 10 s, see the tutorial's validation/result.md).
 """
 import os
 import re
-import shutil
 import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(here), "lib"))
-from caseTest import (CaseTest, copy_case, project_dir, run,  # noqa: E402
-                      scratch, set_entry)
-sys.path.insert(0, os.path.join(project_dir, "etc", "python"))
+from caseTest import run_parts, run_tutorial  # noqa: E402
 from swayChecks import check_sway  # noqa: E402
 from swayTank import SwayTank  # noqa: E402
 
-TUTORIAL = os.path.join(project_dir,
-                        "tutorials/ulphPdFoam/sloshingTankFaltinsen")
+TUTORIAL = "tutorials/ulphPdFoam/sloshingTankFaltinsen"
 T = 1.3
 TANK = SwayTank(length=1.73, depth=0.6, amplitude=0.032, period=T)
 PHASE = 10
 AMPLITUDE = 30
 
 
-def main():
-    t = CaseTest("ulphSloshingFaltinsen")
-    work = scratch("ulphSloshingFaltinsen")
-    try:
-        case = copy_case(TUTORIAL, os.path.join(work, "sloshingTankFaltinsen"),
-                         stored_results=False)
-        set_entry(case, "system/controlDict", "endTime", 3)
-        code, out = run(["./Allrun", "-dx", "0.04"], case)
-        t.check("Allrun -dx 0.04 succeeds", code == 0, out[-2000:])
-        m = re.search(r"amplitude error ([0-9.]+) %.*phase error ([0-9.]+) %"
-                      r" T \(largest\).* (\d+) of (\d+) extrema", out)
-        t.check("validation ran", m is not None, out[-1500:])
-        if m:
-            amp, phase = float(m.group(1)), float(m.group(2))
-            found, compared = int(m.group(3)), int(m.group(4))
-            t.check("all %d of the experiment's extrema to t = 3 s found"
-                    " (%d)" % (compared, found), found == compared == 4)
-            t.check("phase error of the extrema %.1f %% < %d %% of T"
-                    % (phase, PHASE), phase < PHASE)
-            t.check("amplitude error %.1f %% < %d %%" % (amp, AMPLITUDE),
-                    amp < AMPLITUDE)
+def faltinsen(t, work):
+    case, code, out = run_tutorial(t, TUTORIAL, work,
+                                   "sloshingTankFaltinsen", ("-dx", "0.04"),
+                                   3)
+    m = re.search(r"amplitude error ([0-9.]+) %.*phase error ([0-9.]+) %"
+                  r" T \(largest\).* (\d+) of (\d+) extrema", out)
+    t.check("validation ran", m is not None, out[-1500:])
+    if m:
+        amp, phase = float(m.group(1)), float(m.group(2))
+        found, compared = int(m.group(3)), int(m.group(4))
+        t.check("all %d of the experiment's extrema to t = 3 s found"
+                " (%d)" % (compared, found), found == compared == 4)
+        t.check("phase error of the extrema %.1f %% < %d %% of T"
+                % (phase, PHASE), phase < PHASE)
+        t.check("amplitude error %.1f %% < %d %%" % (amp, AMPLITUDE),
+                amp < AMPLITUDE)
 
-        check_sway(t, case, TANK, height=1.15)
-    finally:
-        shutil.rmtree(work, ignore_errors=True)
-    return t.finish()
+    check_sway(t, case, TANK, height=1.15)
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_parts("ulphSloshingFaltinsen", faltinsen))

@@ -16,7 +16,10 @@ Shepard filter, hydrostatic start) for 2 s. Checks against hydrostatics:
   rising), fed by the ghosts' averaged tangential velocity through the
   continuity equation (ghostBoundary);
 - no particle leaves the tank or is lost; no NaN (the solver would stop);
-- the log lists the fluid model, the walls and the named effects only.
+- the log lists the fluid model, the walls and the named effects only;
+  the run cost (postProcessing/runCost) has the time of the fluid model,
+  of each named effect and of the scene's neighbour relations, and none
+  of an effect not named (viscosity).
 Then, with a fixed step 13 times the stable one, the run must stop with a
 diagnosis (a density driven to zero: the particle, its density, the last
 good state on disk) rather than a floating-point trap, and leave the
@@ -34,80 +37,73 @@ import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(here), "lib"))
-from caseTest import (CaseTest, copy_case, project_dir, run,  # noqa
-                      scratch, set_entry, snapshot)
-sys.path.insert(0, os.path.join(project_dir, "etc", "python"))
-from foamCloud import read_cloud, times  # noqa: E402
+from caseTest import (copy_case, run, run_parts, run_steps,  # noqa: E402
+                      set_entry, snapshot)
+from foamCloud import read_cloud, speed_history, times  # noqa: E402
+from foamMonitor import run_cost  # noqa: E402
 
 H, WIDTH, DX, G = 0.1, 0.2, 0.005, 9.81
 
 
-def main():
-    t = CaseTest("ulphStillWater")
-    work = scratch("ulphStillWater")
-    try:
-        case = copy_case(os.path.join(here, "ulphStillWater"),
-                         os.path.join(work, "case"))
-        for cmd in (["blockMesh"], ["seedParticles"], ["ulphPdFoam"]):
-            code, out = run(cmd, case)
-            t.check(cmd[0] + " succeeds", code == 0, out[-1500:])
-            if code != 0:
-                return t.finish()
-        for words in ("model ulph", "model ghostWall", "effect gravity",
-                      "effect artificialViscosity", "effect densityFilter",
-                      "water: neighbour search"):
-            t.check("log shows '%s'" % words, words in out)
-        t.check("no viscosity effect unless named",
-                "effect viscosity" not in out)
+def still_water(t, work):
+    case = copy_case(os.path.join(here, "ulphStillWater"),
+                     os.path.join(work, "case"))
+    ok, out = run_steps(t, case)
+    if not ok:
+        return
+    for words in ("model ulph", "model ghostWall", "effect gravity",
+                  "effect artificialViscosity", "effect densityFilter"):
+        t.check("log shows '%s'" % words, words in out)
+    t.check("no viscosity effect unless named",
+            "effect viscosity" not in out)
+    cost = run_cost(case)
+    parts = cost["parts"]
+    for part in ("water.ulph", "water.gravity", "water.artificialViscosity",
+                 "water.densityFilter", "neighbourRelations"):
+        t.check("run cost has the part %s (%s calls)"
+                % (part, parts.get(part, {}).get("calls")),
+                parts.get(part, {}).get("calls", 0) > 0, str(sorted(parts)))
+    t.check("run cost: no viscosity part unless named",
+            "water.viscosity" not in parts, str(sorted(parts)))
+    t.check("run cost: the run completed, models ulph and ghostWall",
+            cost["completed"] and cost["bodies"]["water"]["model"] == "ulph"
+            and cost["bodies"]["tank"]["model"] == "ghostWall",
+            str(cost["bodies"]))
 
-        t_end, last = times(case)[-1]
-        t.check_close("ran to 2 s", t_end, 2.0, 1e-9)
-        c = read_cloud(case, last, "water")
-        x, U, p = c["positions"], c["U"], c["p"]
-        t.check_equal("no particle lost", len(x), 40 * 20)
+    t_end, last = times(case)[-1]
+    t.check_close("ran to 2 s", t_end, 2.0, 1e-9)
+    c = read_cloud(case, last, "water")
+    x, p = c["positions"], c["p"]
+    t.check_equal("no particle lost", len(x), 40 * 20)
 
-        bottom = [pi for pi, xi in zip(p, x) if xi[1] < DX]
-        expected = 1000 * G * (H - DX / 2)
-        t.check_close("bottom pressure vs rho g (H - dx/2)",
-                      sum(bottom) / len(bottom), expected, 0.01)
+    bottom = [pi for pi, xi in zip(p, x) if xi[1] < DX]
+    expected = 1000 * G * (H - DX / 2)
+    t.check_close("bottom pressure vs rho g (H - dx/2)",
+                  sum(bottom) / len(bottom), expected, 0.01)
 
-        scale = math.sqrt(G * H)
-        history = speed_history(case)
-        rms = max(r for _, r, _ in history)
-        t.check("RMS spurious speed, largest over 2 s, %.2e < 1.2e-3"
-                " sqrt(gH) = %.2e" % (rms, 1.2e-3 * scale),
-                rms < 1.2e-3 * scale, str(history))
-        largest = history[-1][2]
-        t.check("max spurious speed at 2 s %.2e < 3e-3 sqrt(gH) = %.2e"
-                % (largest, 3e-3 * scale), largest < 3e-3 * scale)
-        early = max(m for time, _, m in history if 0.5 <= time <= 1)
-        late = max(m for time, _, m in history if time >= 1.5)
-        t.check("max spurious speed not growing: %.2e over 1.5-2 s <="
-                " %.2e over 0.5-1 s" % (late, early), late <= early,
-                str(history))
+    scale = math.sqrt(G * H)
+    history = speed_history(case, "water")
+    rms = max(r for _, r, _ in history)
+    t.check("RMS spurious speed, largest over 2 s, %.2e < 1.2e-3"
+            " sqrt(gH) = %.2e" % (rms, 1.2e-3 * scale),
+            rms < 1.2e-3 * scale, str(history))
+    largest = history[-1][2]
+    t.check("max spurious speed at 2 s %.2e < 3e-3 sqrt(gH) = %.2e"
+            % (largest, 3e-3 * scale), largest < 3e-3 * scale)
+    early = max(m for time, _, m in history if 0.5 <= time <= 1)
+    late = max(m for time, _, m in history if time >= 1.5)
+    t.check("max spurious speed not growing: %.2e over 1.5-2 s <="
+            " %.2e over 0.5-1 s" % (late, early), late <= early,
+            str(history))
 
-        inside = all(0 <= xi[0] <= WIDTH and xi[1] >= 0 for xi in x)
-        t.check("every particle inside the tank", inside)
-        top = max(xi[1] for xi in x)
-        t.check("free surface stays at H (top row %.4f m)" % top,
-                abs(top - (H - DX / 2)) < 0.2 * DX)
+    inside = all(0 <= xi[0] <= WIDTH and xi[1] >= 0 for xi in x)
+    t.check("every particle inside the tank", inside)
+    top = max(xi[1] for xi in x)
+    t.check("free surface stays at H (top row %.4f m)" % top,
+            abs(top - (H - DX / 2)) < 0.2 * DX)
 
-        blow_up(t, case)
-        wall_balance(t, case)
-    finally:
-        shutil.rmtree(work, ignore_errors=True)
-    return t.finish()
-
-
-def speed_history(case):
-    """(time, RMS speed, largest speed) at every written time after 0"""
-    out = []
-    for value, name in times(case)[1:]:
-        U = read_cloud(case, name, "water")["U"]
-        speeds = [math.hypot(u[0], u[1]) for u in U]
-        rms = math.sqrt(sum(s * s for s in speeds) / len(speeds))
-        out.append((value, rms, max(speeds)))
-    return out
+    blow_up(t, case)
+    wall_balance(t, case)
 
 
 def clear_later_times(case):
@@ -159,4 +155,4 @@ def wall_balance(t, case):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_parts("ulphStillWater", still_water))

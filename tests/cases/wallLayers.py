@@ -18,13 +18,11 @@ within N dx of the chosen patches, not overhanging an open patch):
 """
 import math
 import os
-import shutil
 import sys
-import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(
     os.path.abspath(__file__))), "lib"))
-from caseTest import CaseTest  # noqa: E402
+from caseTest import run_parts  # noqa: E402
 import seedCase  # noqa: E402
 
 DX = 0.001
@@ -364,18 +362,6 @@ boundary (walls { type wall; faces ((0 3 2 1) (4 5 6 7) (0 1 5 4)
     no_gap(t, "box3D", water, walls, outside, lambda p: False, 3)
 
 
-def main():
-    t = CaseTest("wallLayers")
-    work = tempfile.mkdtemp(prefix="wallLayers.")
-    try:
-        check_tank(t, work)
-        check_inclined(t, work)
-        check_curved(t, work)
-        check_box_3d(t, work)
-    finally:
-        shutil.rmtree(work, ignore_errors=True)
-    return t.finish()
-
-
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_parts("wallLayers", check_tank, check_inclined,
+                       check_curved, check_box_3d))

@@ -1,14 +1,19 @@
 """Small harness for the case tests: named checks, a summary line per test
-('N passed, N failed'), exit code 1 on any failure."""
+('N passed, N failed'), exit code 1 on any failure; running a test's parts
+in a scratch folder, tutorials and solvers in it. Importing it puts the
+project's Python library (etc/python: clouds, monitors, run cost,
+dictionaries, stability checks) on the path."""
 import hashlib
 import os
 import shutil
 import subprocess
 import sys
 import tempfile
+import traceback
 
 project_dir = os.path.dirname(os.path.dirname(os.path.dirname(
     os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(project_dir, "etc", "python"))
 
 
 class CaseTest:
@@ -66,6 +71,40 @@ def run(cmd, cwd):
     return p.returncode, p.stdout + p.stderr
 
 
+def run_steps(t, case, commands=("blockMesh", "seedParticles", "ulphPdFoam"),
+              label=""):
+    """Run each command in the case, each checked to succeed, up to the
+    first that fails; returns (all succeeded, output of the last run)"""
+    out = ""
+    for cmd in commands:
+        code, out = run([cmd], case)
+        t.check(label + cmd + " succeeds", code == 0, out[-1500:])
+        if code != 0:
+            return False, out
+    return True, out
+
+
+def run_tutorial(t, tutorial, work, name, args=(), end=None, entries=(),
+                 check=True):
+    """A clean copy of the tutorial (project-relative path) without its
+    stored results as <work>/<name>, to endTime end when given, with the
+    entries [(dictionary, key, value)] set, run by its Allrun with args
+    (checked to succeed unless check is False); returns (case, exit code,
+    output)"""
+    case = copy_case(os.path.join(project_dir, tutorial),
+                     os.path.join(work, name), stored_results=False)
+    if end is not None:
+        set_entry(case, "system/controlDict", "endTime", end)
+    for dictionary, key, value in entries:
+        set_entry(case, dictionary, key, value)
+    code, out = run(["./Allrun"] + list(args), case)
+    if check:
+        t.check("%s: Allrun %s%s succeeds"
+                % (name, " ".join(args), "" if end is None else
+                   " to %g s" % end), code == 0, out[-2000:])
+    return case, code, out
+
+
 def set_entry(case, dict_file, entry, value):
     """foamDictionary -entry <entry> -set <value> on a case dictionary."""
     code, out = run(["foamDictionary", dict_file, "-entry", entry, "-set",
@@ -85,17 +124,23 @@ def snapshot(case):
     return out
 
 
-def table(path):
-    """Rows of numbers of a whitespace-separated file, '#' lines skipped
-    (a monitor's or the coupling's .dat)"""
-    rows = []
-    with open(path) as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            rows.append([float(v) for v in line.split()])
-    return rows
-
-
 def scratch(prefix):
     return tempfile.mkdtemp(prefix=prefix + ".")
+
+
+def run_parts(name, *parts):
+    """A test of parts: each called as part(t, work) with the test's
+    CaseTest and a scratch folder (removed at the end); a part that raises
+    counts as a failure and the next part runs. Returns the exit code."""
+    t = CaseTest(name)
+    work = scratch(name)
+    try:
+        for part in parts:
+            try:
+                part(t, work)
+            except Exception:
+                t.check(part.__name__ + " ran", False,
+                        traceback.format_exc()[-1500:])
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+    return t.finish()

@@ -34,8 +34,9 @@ here = os.path.dirname(os.path.abspath(__file__))
 project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
-from foamMonitor import (read_monitor, run_cost, dictionary_entry,  # noqa
-                         save_run, load_runs, pyplot)
+from foamDict import dictionary_entry  # noqa: E402
+from foamMonitor import (arguments, cost_figures, load_runs,  # noqa: E402
+                         pyplot, read_monitor, save_run)
 
 L = 0.1
 T = 0.01
@@ -87,13 +88,6 @@ def elastica(E):
     return abs(integrate(0.5 * (lo + hi))[1])
 
 
-def optional_entry(case, key):
-    try:
-        return dictionary_entry(case, key)
-    except Exception:
-        return None
-
-
 TUTORIAL_SCHEME = "faces, taylor"
 
 
@@ -102,10 +96,12 @@ def scheme(case):
     strain energy integrated with its gradient (the default); 'faces': the
     same with the midpoint rule (Allrun -midpoint); 'paper': eq. 36,
     clamped particles held, load on the end column, midpoint rule"""
-    order = optional_entry(case, "bodies/beam/gradientOrder") or "1"
-    clamp = optional_entry(case, "bodies/beam/constraints/clamp/face/point")
-    load = optional_entry(case, "bodies/beam/constraints/tipLoad/face/point")
-    taylor = optional_entry(case, "bodies/beam/nodalIntegration") == "taylor"
+    def optional(key):
+        return dictionary_entry(case, "bodies/beam/" + key, default=None)
+    order = optional("gradientOrder") or "1"
+    clamp = optional("constraints/clamp/face/point")
+    load = optional("constraints/tipLoad/face/point")
+    taylor = optional("nodalIntegration") == "taylor"
     if order == "2" and clamp and load:
         return "faces, taylor" if taylor else "faces"
     if order == "1" and not clamp and not load:
@@ -122,17 +118,14 @@ def analyse(case):
     kin = dictionary_entry(case, "kinematics")
     ref = timoshenko(E, nu) if kin == "small" else elastica(E)
     dx = float(dictionary_entry(case, "dx", "system/seedParticlesDict"))
-    cost = run_cost(os.path.join(case, "log.isphTlsphFoam"))
-    return {
+    run = {
         "n": round(T / dx), "kinematics": kin, "scheme": scheme(case),
         "hourglass": float(dictionary_entry(case, "hourglass")),
         "deflection": -dy[-1], "spread": max(tail) - min(tail),
         "reference": ref, "endTime": t[-1],
-        "particles": cost["particles"], "steps": cost["steps"],
-        "wall": cost["wall"], "rate": cost["rate"],
-        "threads": (cost["threads"]
-                    or os.environ.get("OMP_NUM_THREADS", "all")),
     }
+    run.update(cost_figures(case))
+    return run
 
 
 def write_table(runs, E, nu):
@@ -220,16 +213,12 @@ def plot(case, run):
 
 
 def main():
-    case = sys.argv[1] if len(sys.argv) > 1 else "."
-    check = "--check" in sys.argv
+    case, check = arguments()
     run = analyse(case)
     save_run(os.path.join(here, "runs"), "%s-n%d-%s-hourglass%g"
              % (run["scheme"].replace(", ", "-").replace(" ", ""), run["n"],
                 run["kinematics"], run["hourglass"]), run)
     runs = load_runs(os.path.join(here, "runs"))
-    for r in runs:
-        r["n"] = int(r["n"])
-        r["threads"] = str(r["threads"]).replace(".0", "")
     runs.sort(key=lambda r: (r["scheme"] != TUTORIAL_SCHEME,
                              r["scheme"] != "faces", r["scheme"],
                              r["kinematics"] != "small", -r["hourglass"],

@@ -37,10 +37,9 @@ here = os.path.dirname(os.path.abspath(__file__))
 project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
-from foamMonitor import (read_monitor, run_cost, dictionary_entry,  # noqa
-                         save_run, load_runs, pyplot)
-
-entry = dictionary_entry
+from foamDict import dictionary_entry as entry  # noqa: E402
+from foamMonitor import (arguments, cost_figures, load_runs,  # noqa: E402
+                         pyplot, read_monitor, save_run)
 
 L = 0.2
 THICK = 0.02
@@ -169,19 +168,16 @@ def analyse(case):
     period = 2 * sum(half) / len(half)
     amplitude = peak(t, y, z[0])
     dx = spacing(case)
-    cost = run_cost(os.path.join(case, "log.isphTlsphFoam"))
-    return {
+    run = {
         "TdX": round(THICK / dx), "dx": dx, "hourglass": hourglass(case),
         "scheme": scheme(case),
         "period": period * th["c0"] / L, "amplitude": amplitude / L,
         "periodTheory": th["period"] * th["c0"] / L,
         "amplitudeTheory": th["amplitude"] / L,
         "crossings": len(z), "endTime": t[-1],
-        "particles": cost["particles"], "steps": cost["steps"],
-        "wall": cost["wall"], "rate": cost["rate"],
-        "threads": (cost["threads"]
-                    or os.environ.get("OMP_NUM_THREADS", "all")),
     }
+    run.update(cost_figures(case))
+    return run
 
 
 def spacing(case):
@@ -197,15 +193,9 @@ def scheme(case):
     the plate across x = 0; 'paper': eq. 36, the clamped particles held
     (Allrun -clamp held); 'order 2': F of order 2 (Allrun -order 2), with
     ', face clamp' when the clamp is on its face"""
-    try:
-        order = entry(case, "bodies/plate/gradientOrder")
-    except Exception:
-        order = "1"
-    try:
-        entry(case, "bodies/plate/constraints/clamp/face/point")
-        clamp = True
-    except Exception:
-        clamp = False
+    order = entry(case, "bodies/plate/gradientOrder", default="1")
+    clamp = entry(case, "bodies/plate/constraints/clamp/face/point",
+                  default=None) is not None
     if order == "1":
         return "face clamp" if clamp else "paper"
     return "order %s%s" % (order, ", face clamp" if clamp else "")
@@ -222,9 +212,6 @@ def save(run):
 
 def runs_present():
     runs = load_runs(os.path.join(here, "runs"))
-    for r in runs:
-        r["TdX"] = int(r["TdX"])
-        r["threads"] = str(r["threads"]).replace(".0", "")
     return sorted(runs, key=lambda r: (r["scheme"] != TUTORIAL_SCHEME,
                                        r["scheme"],
                                        -r["hourglass"], -r["TdX"]))
@@ -371,8 +358,7 @@ def plot(case, run):
 
 
 def main():
-    case = sys.argv[1] if len(sys.argv) > 1 else "."
-    check = "--check" in sys.argv
+    case, check = arguments()
     run = analyse(case)
     save(run)
     th = theory(case)

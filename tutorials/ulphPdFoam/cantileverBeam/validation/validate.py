@@ -18,14 +18,13 @@ the last two written times must agree to 0.1 %. Target: error below 2 %.
 
 Writes validation/result.md (the paper's spacing, 0.01 m) or
 validation/result-dx<spacing>.md with the error and the run's cost
-(particles, steps, wall time from log.ulphPdFoam) and the plot
+(particles, steps, wall time from postProcessing/runCost) and the plot
 deflection[-dx<spacing>].png. With --check, exits 1 when the target is
 missed.
 
 Usage: validate.py <case> [--check]
 """
 import os
-import re
 import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
@@ -33,17 +32,14 @@ project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
 from foamCloud import read_positions, times  # noqa: E402
-from foamMonitor import body_cost, wall_time  # noqa: E402
+from foamDict import dictionary_entry  # noqa: E402
+from foamMonitor import (arguments, body_cost, pyplot,  # noqa: E402
+                         result_suffix, wall_time)
+from fsiChecks import verdict  # noqa: E402
 
 L, H, E, NU = 1.0, 0.2, 22e9, 0.3
 TARGET = 2.0     # %
 STATIC = 0.1     # %
-
-
-def constants(case):
-    props = open(os.path.join(case, "constant", "particleProperties")).read()
-    F = float(re.search(r"^F\s+([0-9.eE+-]+);", props, re.M).group(1))
-    return F
 
 
 def beam(F, X, shear):
@@ -53,12 +49,8 @@ def beam(F, X, shear):
 
 
 def plot(hist, ref, axis, path):
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        print("matplotlib missing: no plot")
+    plt = pyplot()
+    if plt is None:
         return
     fig, (a, b) = plt.subplots(1, 2, figsize=(10, 4))
     a.plot([h[0] * 1e3 for h in hist], [h[1] * 1e3 for h in hist], "o-",
@@ -85,7 +77,7 @@ def plot(hist, ref, axis, path):
 
 
 def main(case, check):
-    F = constants(case)
+    F = float(dictionary_entry(case, "F"))
     x0 = read_positions(case, "0", "beam")
     xmax = max(p[0] for p in x0)
     beamPts = [k for k, p in enumerate(x0) if p[0] > 0]
@@ -114,8 +106,8 @@ def main(case, check):
     cost = body_cost(case, "beam")
     static = drift < STATIC
     ok = abs(err) < TARGET and static
-    paper = abs(cost["dx"] - 0.01) < 1e-9
-    suffix = "" if paper else "-dx%g" % cost["dx"]
+    suffix = result_suffix(cost["dx"], 0.01)
+    paper = not suffix
 
     lines = [
         "# Cantilever beam: static tip deflection vs the beam formula",
@@ -131,7 +123,7 @@ def main(case, check):
         "%+.2f %%: %s | %.4f mm | %+.2f %% | %.4f %%: %s |"
         % (cost["dx"], H / cost["dx"], len(x0), cost["steps"],
            wall_time(cost), v * 1e3, ref * 1e3, err,
-           "met" if abs(err) < TARGET else "MISSED", refTimo * 1e3,
+           verdict(abs(err) < TARGET), refTimo * 1e3,
            errTimo, drift, "static" if static else "NOT STATIC"),
         "",
         "Set-up: ULPH-NOSBPD paper 4.1, Table 1 (L = 1 m, H = 0.2 m, rho = "
@@ -156,5 +148,4 @@ def main(case, check):
 
 
 if __name__ == "__main__":
-    args = [a for a in sys.argv[1:] if a != "--check"]
-    sys.exit(main(args[0] if args else ".", "--check" in sys.argv))
+    sys.exit(main(*arguments()))

@@ -37,7 +37,7 @@ interFoamFront.dat (with water's surface tension).
 
 Writes validation/result.md (the paper's spacing, 1 mm) or
 validation/result-dx<spacing>.md with the error, the checks, the run's cost
-(particles, steps, wall time from log.ulphPdFoam) and the plots
+(particles, steps, wall time from postProcessing/runCost) and the plots
 front[-dx<spacing>].png and pressure[-dx<spacing>].png.
 With --check, exits 1 when a target is missed (for benchmark suites).
 
@@ -45,7 +45,6 @@ Usage: validate.py <case> [--check]
 """
 import math
 import os
-import re
 import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
@@ -53,8 +52,10 @@ project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
 from foamCloud import read_field, read_positions, times  # noqa: E402
-from foamMonitor import body_cost, wall_time  # noqa: E402
-from fsiChecks import end_time, energy_total  # noqa: E402
+from foamDict import lookup, read_dictionary  # noqa: E402
+from foamMonitor import (arguments, body_cost, interp,  # noqa: E402
+                         pyplot, read_rows, result_suffix, wall_time)
+from fsiChecks import end_time, energy_total, verdict  # noqa: E402
 
 H = 0.057
 G = 9.81
@@ -74,17 +75,12 @@ VOF_FRONTS = [
 def reference(name="martinMoyce1952.dat", required=True):
     """(T, x/H) rows of a front file in validation/; an optional one that
     is absent gives none"""
-    out = []
     path = os.path.join(here, name)
     if not os.path.isfile(path):
         if required:
             sys.exit("validate.py: %s missing" % path)
-        return out
-    for line in open(path):
-        if line.strip() and not line.startswith("#"):
-            T, X = line.split()[:2]
-            out.append((float(T), float(X)))
-    return out
+        return []
+    return [tuple(row[:2]) for row in read_rows(path)]
 
 
 def fill_front(x, dx, ratio, horizon):
@@ -143,14 +139,6 @@ def energy_rise(case):
     return rise
 
 
-def interpolate(T, X, t):
-    for k in range(1, len(T)):
-        if T[k] >= t:
-            f = (t - T[k - 1]) / (T[k] - T[k - 1])
-            return X[k - 1] + f * (X[k] - X[k - 1])
-    return None
-
-
 def against_vof(errors, vof_at):
     """RMS differences [H] from the Navier-Stokes front (interFoam) at the
     experiment's times before that front reaches the far wall: of the
@@ -171,30 +159,27 @@ def against_vof(errors, vof_at):
 
 def case_cost(case):
     """foamMonitor's body_cost of the water (with the walls and its kernel's
-    h), the kernel's horizon (in h; the Gaussian's default 3), the
-    artificial viscosity's alpha and the water's minPressure"""
-    props = open(os.path.join(case, "constant", "particleProperties")).read()
-    alpha = re.search(r"artificialViscosity\s*\{\s*alpha\s+([0-9.eE+-]+)",
-                      props)
+    h), and from the water's entries in constant/particleProperties its
+    kernel's horizon (in h; the Gaussian's default 3), the artificial
+    viscosity's alpha, its minPressure and whether it has the wall
+    repulsion"""
+    water = lookup(read_dictionary(case, "constant/particleProperties"),
+                   "bodies/water")
     cost = body_cost(case, "water", walls="walls")
-    horizon = re.search(r"\n\s*horizon\s+([0-9.eE+-]+)", props)
-    cost["horizon"] = float(horizon.group(1)) if horizon else 3.0
-    cost["alpha"] = alpha.group(1) if alpha else "none"
-    pmin = re.search(r"\n\s*minPressure\s+([0-9.eE+-]+)", props)
-    cost["minPressure"] = ("minPressure %s Pa" % pmin.group(1) if pmin
+    cost["horizon"] = float(lookup(water, "kernel/horizon", "3"))
+    cost["alpha"] = lookup(water, "effects/artificialViscosity/alpha",
+                           "none")
+    pmin = lookup(water, "minPressure", None)
+    cost["minPressure"] = ("minPressure %s Pa" % pmin if pmin is not None
                            else "no pressure floor")
-    cost["repulsion"] = re.search(r"\n\s*wallRepulsion\s*\{", props) \
+    cost["repulsion"] = lookup(water, "effects/wallRepulsion", None) \
         is not None
     return cost
 
 
 def plot(T, X, F, ref, vofs, path):
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        print("matplotlib missing: no plot")
+    plt = pyplot()
+    if plt is None:
         return
     fig, ax = plt.subplots(figsize=(6, 4))
     ax.plot(T, X, "-", label="ulphPdFoam: largest particle x")
@@ -217,12 +202,8 @@ def plot(T, X, F, ref, vofs, path):
 def plot_pressure(case, cost, path):
     """The water's particles coloured by p/(rho0 g H) at every written
     multiple of 0.1 s"""
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        print("matplotlib missing: no pressure plot")
+    plt = pyplot()
+    if plt is None:
         return
     shots = [(t, name) for t, name in times(case)
              if t > 0 and abs(t / 0.1 - round(t / 0.1)) < 1e-6]
@@ -264,8 +245,8 @@ def main(case, check):
     T, X, F, counts, depth = front_history(case, cost)
     errors = []
     for t, x in ref:
-        xs = interpolate(T, X, t)
-        xf = interpolate(T, F, t)
+        xs = interp(t, T, X, hold=False)
+        xf = interp(t, T, F, hold=False)
         if xs is not None:
             errors.append((t, x, xs, xs - x, xf, xf - x))
     rms = math.sqrt(sum(e[3] ** 2 for e in errors) / len(errors))
@@ -273,7 +254,8 @@ def main(case, check):
     vofs = [(name, what, style, reference(name, required=False))
             for name, what, style in VOF_FRONTS]
     vofs = [v for v in vofs if v[3]]
-    vof_at = [[interpolate([r[0] for r in vof], [r[1] for r in vof], e[0])
+    vof_at = [[interp(e[0], [r[0] for r in vof], [r[1] for r in vof],
+                      hold=False)
                for e in errors] for _, _, _, vof in vofs]
     dx = cost["dx"]
     # The front at the far wall: the largest x within dx of it
@@ -301,8 +283,8 @@ def main(case, check):
     ]
     stable = all(good for _, good in checks)
     ok = len(errors) == len(ref) and rms < TARGET and stable
-    paper = abs(dx - 0.001) < 1e-9
-    suffix = "" if paper else "-dx%g" % dx
+    suffix = result_suffix(dx, 0.001)
+    paper = not suffix
 
     lines = [
         "# Dam break: surge front vs Martin & Moyce (1952), and through "
@@ -317,8 +299,7 @@ def main(case, check):
         "|---|---|---|---|---|---|---|",
         "| %g m (H/dx = %.0f) | %d | %d | %d | %s | %.3g | %.4f H: %s |"
         % (dx, H / dx, counts[-1], cost["walls"], cost["steps"],
-           wall_time(cost), cost["rate"], rms,
-           "met" if rms < TARGET else "MISSED"),
+           wall_time(cost), cost["rate"], rms, verdict(rms < TARGET)),
         "",
         "Set-up: ULPH-NOSBPD paper 4.2, Table 2 (L = H = 0.057 m, tank 4H, "
         "c0 = 40 m/s, Gaussian kernel h = 1.2 dx, horizon 3h, density "
@@ -332,8 +313,7 @@ def main(case, check):
         "run-up and the plunging wave:" % arrival,
         "",
     ]
-    lines += ["- %s: %s" % (what, "met" if good else "MISSED")
-              for what, good in checks]
+    lines += ["- %s: %s" % (what, verdict(good)) for what, good in checks]
     lines += [
         "",
         "Front at water fraction 0.5 (not checked, see validate.py): RMS "
@@ -375,11 +355,10 @@ def main(case, check):
     print("\n".join(lines))
     print("dam break front: RMS error %.4f H (target < %.2f H), deepest"
           " penetration %.2f dx, energy rise %.3f %%, stability checks %s:"
-          " %s" % (rms, TARGET, depth / dx, 100 * rise,
-                   "met" if stable else "MISSED", "PASS" if ok else "FAIL"))
+          " %s" % (rms, TARGET, depth / dx, 100 * rise, verdict(stable),
+                   "PASS" if ok else "FAIL"))
     return 0 if ok or not check else 1
 
 
 if __name__ == "__main__":
-    args = [a for a in sys.argv[1:] if a != "--check"]
-    sys.exit(main(args[0] if args else ".", "--check" in sys.argv))
+    sys.exit(main(*arguments()))

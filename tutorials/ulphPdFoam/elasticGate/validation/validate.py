@@ -12,8 +12,9 @@ README.md): x 8.3 mm (Khayyer 2018 ISPH-SPH) to 10.8 mm (Ng 2020 SPH-VCPM),
 y 4.6 mm to 5.7 mm; the target (BENCHMARKS) is an RMS of x below those.
 
 Writes validation/result.md (or result-dx<spacing>.md for a spacing other
-than the tutorial's 1.25 mm) with the errors, peaks, particles, steps and
-wall time from log.ulphPdFoam, and freeEnd[-dx<spacing>].png.
+than the tutorial's 1.25 mm) with the errors, peaks, particles, steps,
+solid sub-steps and wall time from the run cost
+(postProcessing/runCost), and freeEnd[-dx<spacing>].png.
 
 Also applies fsiChecks' stability checks (run to the end, no particle
 lost, water in the tank and not in the gate, energy not growing, the gate's
@@ -26,61 +27,38 @@ Usage: validate.py <case> [--check]
 """
 import math
 import os
-import re
 import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
-from foamMonitor import (case_spacing, interp, read_monitor,  # noqa: E402
+from foamMonitor import (arguments, case_spacing, interp,  # noqa: E402
+                         pyplot, read_monitor, read_rows, result_suffix,
                          run_cost, wall_time)
-from fsiChecks import stability_checks  # noqa: E402
+from fsiChecks import (check_rows, print_checks,  # noqa: E402
+                       stability_checks)
 
 DEFAULT_DX = 0.00125
 PUBLISHED_X = 0.0083    # best published RMS of x [m] (Khayyer 2018)
 
 
-def read_table(path):
-    rows = []
-    with open(path) as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            rows.append(line.split())
-    return rows
-
-
-def case_cost(case):
-    """foamMonitor's run_cost of log.ulphPdFoam, with the largest number of
-    solid sub-steps per fluid step the coupling took"""
-    log_file = os.path.join(case, "log.ulphPdFoam")
-    cost = run_cost(log_file)
-    sub = re.findall(r"(\d+) solid sub-steps per fluid step",
-                     open(log_file).read())
-    cost["sub"] = max(map(int, sub)) if sub else 1
-    return cost
-
-
 def main():
-    args = [a for a in sys.argv[1:] if not a.startswith("--")]
-    if not args:
-        print(__doc__)
-        return 2
-    case = args[0]
+    case, check = arguments(__doc__)
     sim = read_monitor(case, "freeEnd")    # a run and its restarts
     ts, dx_sim, dy_sim = sim["time"], sim["dx"], sim["dy"]
-    ref = read_table(os.path.join(here, "antoci2007_freeEnd.dat"))
+    ref = read_rows(os.path.join(here, "antoci2007_freeEnd.dat"))
 
     errors = {}
     for q, series in (("x", dx_sim), ("y", dy_sim)):
-        pts = [(float(t), float(v)) for k, t, v in ref
-               if k == q and 0 < float(t) <= ts[-1]]
+        pts = [(t, v) for k, t, v in ref if k == q and 0 < t <= ts[-1]]
         sq = [(interp(t, ts, series) - v) ** 2 for t, v in pts]
         errors[q] = (math.sqrt(sum(sq) / len(sq)) if sq else float("nan"),
                      len(sq))
 
-    cost = case_cost(case)
+    cost = run_cost(case)
+    # the most solid sub-steps per fluid step the coupling took
+    sub = cost["subSteps"]["coupling"]["most"]
     dx = case_spacing(case, DEFAULT_DX)
     peak_x = max(dx_sim)
     peak_y = max(dy_sim)
@@ -108,10 +86,9 @@ def main():
     checks = stability_checks(case, "gate", (0, 0.5), dx,
                               1000 * 9.81 * 0.14 ** 2 * 0.1 / 2,
                               velocity_scale=math.sqrt(9.81 * 0.14))
-    for what, good in checks:
-        print("%s: %s" % ("met" if good else "MISSED", what))
+    print_checks(checks)
 
-    suffix = "" if abs(dx - DEFAULT_DX) < 1e-12 else "-dx%g" % dx
+    suffix = result_suffix(dx, DEFAULT_DX)
     with open(os.path.join(here, "result%s.md" % suffix), "w") as f:
         f.write("# elasticGate: free-end displacement vs Antoci et al. 2007\n\n")
         f.write("Spacing %g m (gate %d particles thick), run to %.3f s.\n\n"
@@ -128,26 +105,20 @@ def main():
                 % PUBLISHED_X)
         f.write("| particles | %d |\n| fluid steps | %d |\n"
                 % (cost["particles"], cost["steps"]))
-        f.write("| solid sub-steps per fluid step (max) | %d |\n"
-                % cost["sub"])
+        f.write("| solid sub-steps per fluid step (max) | %d |\n" % sub)
         f.write("| wall time | %s%s |\n"
                 % (wall_time(cost), "" if cost["runs"] == 1 else
                    " in %d runs (restarts)" % cost["runs"]))
         f.write("\n| check (fsiChecks: stable) | |\n|---|---|\n")
-        for what, good in checks:
-            f.write("| %s | %s |\n" % (what, "met" if good else "MISSED"))
+        f.write("".join(row + "\n" for row in check_rows(checks)))
 
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        print("matplotlib not found: no plot")
+    plt = pyplot()
+    if plt is None:
         return 0
     fig, axes = plt.subplots(1, 2, figsize=(10, 4))
     for ax, q, series in ((axes[0], "x", dx_sim), (axes[1], "y", dy_sim)):
-        rt = [float(t) for k, t, v in ref if k == q]
-        rv = [float(v) for k, t, v in ref if k == q]
+        rt = [t for k, t, v in ref if k == q]
+        rv = [v for k, t, v in ref if k == q]
         ax.plot(ts, series, "-", label="ulphPdFoam, dx = %g m" % dx)
         ax.plot(rt, rv, "o", label="Antoci et al. 2007 (experiment)")
         ax.set_xlabel("t [s]")
@@ -158,7 +129,7 @@ def main():
     fig.savefig(os.path.join(here, "freeEnd%s.png" % suffix), dpi=100)
     met = (complete and errors["x"][0] < PUBLISHED_X
            and all(good for _, good in checks))
-    return 1 if "--check" in sys.argv and not met else 0
+    return 1 if check and not met else 0
 
 
 if __name__ == "__main__":

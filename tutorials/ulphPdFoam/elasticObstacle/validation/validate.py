@@ -20,15 +20,15 @@ Usage: validate.py <case> [--check]
 """
 import math
 import os
-import re
 import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
-from foamMonitor import (case_spacing, interp, pyplot,  # noqa: E402
-                         read_monitor, run_cost, wall_time)
+from foamMonitor import (arguments, case_spacing, interp,  # noqa: E402
+                         pyplot, read_monitor, read_rows, result_suffix,
+                         run_cost, wall_time)
 
 DEFAULT_DX = 0.002
 PEAK_DROP = 0.15    # a peak is a maximum followed by this relative fall
@@ -38,11 +38,8 @@ PEAK_MIN = 0.02     # [m], and above this
 def references():
     """{source: ([t], [x])} sorted in time"""
     data = {}
-    for line in open(os.path.join(here, "referenceSolutions.dat")):
-        if line.startswith("#") or not line.strip():
-            continue
-        name, t, x = line.split()
-        data.setdefault(name, []).append((float(t), float(x)))
+    for name, t, x in read_rows(os.path.join(here, "referenceSolutions.dat")):
+        data.setdefault(name, []).append((t, x))
     return {k: tuple(map(list, zip(*sorted(v)))) for k, v in data.items()}
 
 
@@ -58,15 +55,8 @@ def first_peak(ts, xs):
     return tbest, best, False
 
 
-
-
 def main():
-    args = [a for a in sys.argv[1:] if not a.startswith("--")]
-    if not args:
-        print(__doc__)
-        return 2
-    case = args[0]
-    check = "--check" in sys.argv
+    case, check = arguments(__doc__)
 
     run = read_monitor(case, "pointA")
     ts, xs = run["time"], run["dx"]
@@ -85,10 +75,7 @@ def main():
               if t <= rt[-1]]
         rms[k] = math.sqrt(sum(sq) / len(sq))
 
-    cost = run_cost(os.path.join(case, "log.ulphPdFoam"))
-    log = open(os.path.join(case, "log.ulphPdFoam")).read()
-    sub = [int(n) for n in
-           re.findall(r"(\d+) solid sub-steps per fluid step", log)]
+    cost = run_cost(case)
     dx = case_spacing(case, DEFAULT_DX)
 
     verdict = "met" if inside else "MISSED"
@@ -102,7 +89,7 @@ def main():
         print("  %-13s first peak %.4f m at %.3f s, RMS difference %.4f m"
               % (k, peaks[k][1], peaks[k][0], rms[k]))
 
-    suffix = "" if abs(dx - DEFAULT_DX) < 1e-12 else "-dx%g" % dx
+    suffix = result_suffix(dx, DEFAULT_DX)
     with open(os.path.join(here, "result%s.md" % suffix), "w") as f:
         f.write("# Elastic obstacle: displacement of point A vs published"
                 " solutions\n\n")
@@ -116,8 +103,8 @@ def main():
         f.write("| %g m (obstacle %d thick) | %d | %d | %d | %s | %.3g |"
                 " %.3f s | %.4f m | %.3f s | %s |\n"
                 % (dx, round(0.012 / dx), cost["particles"], cost["steps"],
-                   max(sub) if sub else 1, wall_time(cost), cost["rate"],
-                   ts[-1], xp, tp, verdict))
+                   cost["subSteps"]["coupling"]["most"], wall_time(cost),
+                   cost["rate"], ts[-1], xp, tp, verdict))
         f.write("\n| reference | first peak | at | RMS difference from this"
                 " run |\n|---|---|---|---|\n")
         for k in sorted(refs):

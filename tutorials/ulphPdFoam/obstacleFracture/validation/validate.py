@@ -24,28 +24,21 @@ Usage: validate.py <case> [--check]
 """
 import math
 import os
-import re
 import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
-from foamCloud import read_cloud, times  # noqa: E402
-from foamMonitor import (case_spacing, pyplot, run_cost,  # noqa: E402
-                         wall_time)
-from fsiChecks import stability_checks  # noqa: E402
+from foamCloud import read_cloud, read_field, times  # noqa: E402
+from foamMonitor import (arguments, case_spacing, pyplot,  # noqa: E402
+                         result_suffix, run_cost, wall_time)
+from fsiChecks import (check_rows, print_checks,  # noqa: E402
+                       stability_checks)
 
 
 DEFAULT_DX = 0.002
 TANK = 0.584           # the tank's width and the height of its walls (open top)
-
-
-def broken_bonds(case, name):
-    path = os.path.join(case, name, "lagrangian", "obstacle", "brokenBonds")
-    if not os.path.exists(path):
-        return 0
-    return len(re.findall(r"\(\s*\d+\s+\d+\s*\)", open(path).read()))
 
 
 def broken_pairs(case, name):
@@ -53,8 +46,8 @@ def broken_pairs(case, name):
     path = os.path.join(case, name, "lagrangian", "obstacle", "brokenBonds")
     if not os.path.exists(path):
         return set()
-    return set((int(a), int(b)) for a, b in
-               re.findall(r"\(\s*(\d+)\s+(\d+)\s*\)", open(path).read()))
+    return set((int(a), int(b))
+               for a, b in read_field(case, name, "obstacle", "brokenBonds"))
 
 
 def largest_intact_stretch(cloud, broken, horizon):
@@ -84,12 +77,7 @@ def largest_intact_stretch(cloud, broken, horizon):
 
 
 def main():
-    args = [a for a in sys.argv[1:] if not a.startswith("--")]
-    if not args:
-        print(__doc__)
-        return 2
-    case = args[0]
-    check = "--check" in sys.argv
+    case, check = arguments(__doc__)
     dx = case_spacing(case, DEFAULT_DX)
 
     series = times(case)
@@ -102,7 +90,8 @@ def main():
     clouds = {body: read_cloud(case, last, body)
               for body in ("water", "obstacle")}
     water = clouds["water"]["positions"]
-    nBroken = broken_bonds(case, last)
+    broken = broken_pairs(case, last)
+    nBroken = len(broken)
     damage = clouds["obstacle"]["damage"]
     checks.append(("bonds broke (%d)" % nBroken, nBroken > 0))
     nHalf = sum(1 for d in damage if d > 0.5)
@@ -110,15 +99,14 @@ def main():
     # at the end (the baffle's horizon: 3 spacings)
     firstBroken = None
     for t, name in series:
-        if broken_bonds(case, name):
+        if broken_pairs(case, name):
             firstBroken = t
             break
     sMax, where = largest_intact_stretch(
-        clouds["obstacle"], broken_pairs(case, last), 3 * dx)
+        clouds["obstacle"], broken, 3 * dx)
 
     ok = all(c[1] for c in checks)
-    for what, good in checks:
-        print("%s: %s" % ("met" if good else "MISSED", what))
+    print_checks(checks)
     plastic = max(clouds["obstacle"].get("plasticStrain", [0]))
     print("damage: largest %.3f, %d of %d particles above 0.5; largest"
           " equivalent plastic strain %.3f" % (max(damage), nHalf,
@@ -130,8 +118,8 @@ def main():
                    % (t1, sMax, where[0], where[1]))
     print("%s; %s" % (firstText, stretchText))
 
-    cost = run_cost(os.path.join(case, "log.ulphPdFoam"))
-    suffix = "" if abs(dx - DEFAULT_DX) < 1e-12 else "-dx%g" % dx
+    cost = run_cost(case)
+    suffix = result_suffix(dx, DEFAULT_DX)
     with open(os.path.join(here, "result%s.md" % suffix), "w") as f:
         f.write("# Obstacle fracture: stability and damage\n\n")
         f.write("Command: `tutorials/ulphPdFoam/obstacleFracture/Allrun%s`\n\n"
@@ -146,13 +134,12 @@ def main():
                    cost["rate"], nBroken, max(damage), nHalf, len(damage),
                    plastic))
         if cost["runs"] > 1:
-            f.write("\nThe log holds %d runs (a run and its restarts): the"
+            f.write("\nThe case holds %d runs (a run and its restarts): the"
                     " wall time adds them up.\n" % cost["runs"])
         f.write("\nBonds: %s; %s.\n" % (firstText, stretchText))
         f.write("\n| check (BENCHMARKS: runs to the end, stable, no particle"
                 " lost; fractures) | |\n|---|---|\n")
-        for what, good in checks:
-            f.write("| %s | %s |\n" % (what, "met" if good else "MISSED"))
+        f.write("".join(row + "\n" for row in check_rows(checks)))
         f.write("\nSet-up: ULPH-NOSBPD paper 4.4, Table 4 (Drucker-Prager"
                 " baffle: rho 2500, E 30 MPa, nu 0.25, friction angle 13"
                 " degrees, cohesion 5 kPa, dilation 0, critical stretch"

@@ -30,7 +30,9 @@ here = os.path.dirname(os.path.abspath(__file__))
 project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
-from foamMonitor import body_cost, wall_time  # noqa: E402
+from foamMonitor import (arguments, body_cost, pyplot,  # noqa: E402
+                         result_suffix, wall_time)
+from fsiChecks import verdict  # noqa: E402
 from swayTank import SwayTank  # noqa: E402
 
 T = 1.875
@@ -58,12 +60,8 @@ def extrema(series):
 
 
 def plot(sim, path):
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        print("matplotlib missing: no plot")
+    plt = pyplot()
+    if plt is None:
         return
     ts = [s[0] for s in sim]
     fig, ax = plt.subplots(figsize=(7, 3.5))
@@ -105,8 +103,8 @@ def main(case, check):
     crests = [r for r in rows if r[0] == "max"]
     ok = len(crests) == sum(1 for _, k in ext_lin if k == "max") > 0 \
         and len(rows) == len(ext_lin) and phase < PHASE_TARGET
-    paper = abs(dx - 0.01) < 1e-9
-    suffix = "" if paper else "-dx%g" % dx
+    suffix = result_suffix(dx, 0.01)
+    paper = not suffix
 
     lines = [
         "# Sloshing tank: elevation at FS1 vs linear theory",
@@ -120,7 +118,7 @@ def main(case, check):
         "|---|---|---|---|---|---|---|---|",
         "| %g m | %d | %d | %d | %s | %.3g | %.2f %%: %s | %.1f %% |"
         % (dx, cost["water"], cost["walls"], cost["steps"], wall_time(cost),
-           cost["rate"], 100 * phase, "met" if ok else "MISSED", 100 * rms),
+           cost["rate"], 100 * phase, verdict(ok), 100 * rms),
         "",
         "Set-up: ULPH-NOSBPD paper 4.3 (tank 1.73 x 1.15 m, depth 0.5 m, "
         "A0 = 0.032 m, T = 1.875 s, eq. 60 through tabulated6DoFMotion, "
@@ -146,5 +144,4 @@ def main(case, check):
 
 
 if __name__ == "__main__":
-    args = [a for a in sys.argv[1:] if a != "--check"]
-    sys.exit(main(args[0] if args else ".", "--check" in sys.argv))
+    sys.exit(main(*arguments()))

@@ -44,14 +44,15 @@ Usage: validate.py <case> [--check]
 """
 import math
 import os
-import re
 import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
-from foamMonitor import body_cost, wall_time  # noqa: E402
+from foamMonitor import (arguments, body_cost, interp,  # noqa: E402
+                         pyplot, read_rows, result_suffix, wall_time)
+from fsiChecks import end_time, verdict  # noqa: E402
 from swayTank import SwayTank  # noqa: E402
 
 T = 1.3
@@ -66,12 +67,8 @@ def linear_eta(t):
 
 
 def experiment():
-    out = []
-    for line in open(os.path.join(here, "faltinsen2000.dat")):
-        line = line.split("#")[0].split()
-        if line:
-            out.append((float(line[0]), float(line[1])))
-    return out
+    return [tuple(row[:2])
+            for row in read_rows(os.path.join(here, "faltinsen2000.dat"))]
 
 
 def refine(series, k):
@@ -125,39 +122,9 @@ def matched(sim, kind, te):
     return (t, e, m not in (idx[0], idx[-1]))
 
 
-def interp(series, t):
-    lo, hi = 0, len(series) - 1
-    while hi - lo > 1:
-        mid = (lo + hi) // 2
-        if series[mid][0] <= t:
-            lo = mid
-        else:
-            hi = mid
-    (t0, y0), (t1, y1) = series[lo], series[hi]
-    return y0 if t1 == t0 else y0 + (y1 - y0) * (t - t0) / (t1 - t0)
-
-
-def case_cost(case):
-    """foamMonitor's body_cost with the run's endTime"""
-    cost = body_cost(case, "water", walls="tank")
-    cost["endTime"] = cost_end(case)
-    return cost
-
-
-def cost_end(case):
-    end = re.search(r"^endTime\s+([0-9.e+-]+);",
-                    open(os.path.join(case, "system", "controlDict")).read(),
-                    re.M)
-    return float(end.group(1)) if end else float("nan")
-
-
 def plot(sim, exp, rows, path):
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        print("matplotlib missing: no plot")
+    plt = pyplot()
+    if plt is None:
         return
     ts = [s[0] for s in sim]
     fig, ax = plt.subplots(figsize=(9, 3.8))
@@ -180,7 +147,8 @@ def plot(sim, exp, rows, path):
 
 
 def main(case, check):
-    cost = case_cost(case)
+    cost = body_cost(case, "water", walls="tank")
+    t_end = end_time(case)
     dx = cost["dx"]
     sim = TANK.probe_elevation(case, dx, XPROBE)
     exp = experiment()
@@ -202,17 +170,18 @@ def main(case, check):
     else:
         amp = ratio = phase_max = phase_mean = float("nan")
     ok = ok and amp < AMPLITUDE_TARGET
-    finished = tend >= cost_end(case) - 1e-6
-    status = ("met" if ok else "MISSED") if finished \
+    finished = tend >= t_end - 1e-6
+    status = verdict(ok) if finished \
         else "%s so far, unfinished run" % ("met" if ok else "missed")
     ok = ok and finished
     t0, t1 = exp[0][0], min(exp[-1][0], tend)
     window = [s for s in sim if t0 <= s[0] <= t1]
-    rms = math.sqrt(sum((s[1] - interp(exp, s[0])) ** 2 for s in window)
+    te, ee = [e[0] for e in exp], [e[1] for e in exp]
+    rms = math.sqrt(sum((s[1] - interp(s[0], te, ee)) ** 2 for s in window)
                     / len(window)) / max(abs(e[1]) for e in exp
                                          if e[0] <= t1)
-    paper = abs(dx - 0.01) < 1e-9
-    suffix = "" if paper else "-dx%g" % dx
+    suffix = result_suffix(dx, 0.01)
+    paper = not suffix
 
     lines = [
         "# Sloshing tank (Faltinsen et al. 2000, Fig. 7): elevation 0.05 m"
@@ -239,7 +208,7 @@ def main(case, check):
         lines += [
             "**Unfinished run**: stopped at t = %g s of %g s; the measures "
             "cover the experiment's extrema up to then only." %
-            (tend, cost["endTime"]), ""]
+            (tend, t_end), ""]
     lines += [
         "Set-up: Faltinsen et al. (2000), Fig. 7 (tank 1.73 x 1.15 m, depth "
         "0.6 m, A0 = 0.032 m, T = 1.3 s, X = A0 (cos(2 pi t/T) - 1) through "
@@ -281,5 +250,4 @@ def main(case, check):
 
 
 if __name__ == "__main__":
-    args = [a for a in sys.argv[1:] if a != "--check"]
-    sys.exit(main(args[0] if args else ".", "--check" in sys.argv))
+    sys.exit(main(*arguments()))

@@ -30,9 +30,10 @@ project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
 from foamCloud import read_positions, times  # noqa: E402
-from fsiChecks import stability_checks  # noqa: E402
-from foamMonitor import (case_spacing, pyplot, read_monitor,  # noqa: E402
-                         run_cost, wall_time)
+from fsiChecks import (check_rows, print_checks,  # noqa: E402
+                       stability_checks)
+from foamMonitor import (arguments, case_spacing, pyplot,  # noqa: E402
+                         read_monitor, result_suffix, run_cost, wall_time)
 
 DEFAULT_DX = 0.0035
 TANK = (0.0, 1.5)       # walls at x = 0 and 1.5 m
@@ -40,12 +41,7 @@ COLUMN = (0.5, 0.2)     # water column width and height [m]
 
 
 def main():
-    args = [a for a in sys.argv[1:] if not a.startswith("--")]
-    if not args:
-        print(__doc__)
-        return 2
-    case = args[0]
-    check = "--check" in sys.argv
+    case, check = arguments(__doc__)
     dx = case_spacing(case, DEFAULT_DX)
 
     # rho g H^2 W/2 of the column
@@ -68,13 +64,12 @@ def main():
                    float("nan"))
 
     ok = all(c[1] for c in checks)
-    for what, good in checks:
-        print("%s: %s" % ("met" if good else "MISSED", what))
+    print_checks(checks)
     print("point A: largest opening %.4f m (dy %.4f m) at %.3f s; the gate"
           " starts to open (1 mm) at %.3f s" % (xMax, a["dy"][k], tMax, tArrive))
 
-    cost = run_cost(os.path.join(case, "log.ulphPdFoam"))
-    suffix = "" if abs(dx - DEFAULT_DX) < 1e-12 else "-dx%g" % dx
+    cost = run_cost(case)
+    suffix = result_suffix(dx, DEFAULT_DX)
     with open(os.path.join(here, "result%s.md" % suffix), "w") as f:
         f.write("# Sluice gate: stability and the gate's opening\n\n")
         f.write("Command: `tutorials/ulphPdFoam/sluiceGate/Allrun%s`\n\n"
@@ -90,8 +85,7 @@ def main():
                    a["time"][-1]))
         f.write("\n| check (BENCHMARKS: stable; the paper's sequence) | |\n"
                 "|---|---|\n")
-        for what, good in checks:
-            f.write("| %s | %s |\n" % (what, "met" if good else "MISSED"))
+        f.write("".join(row + "\n" for row in check_rows(checks)))
         f.write("\nSet-up: ULPH-NOSBPD paper 4.5, Table 5 (rubber gate 0.125"
                 " x 0.007 m, rho 1250, E 4 MPa, nu 0.4; c0 60 m/s, alpha"
                 " 0.05), water 0.5 x 0.2 m, the gate 0.3 m downstream of it."
