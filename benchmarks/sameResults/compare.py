@@ -14,7 +14,12 @@ run at that time), so that a body far from the origin is not favoured.
 
 Monitors: every postProcessing/<name>/<start>/*.dat file, column by column
 (columns matched by the header's names, '# time ...', when both sides
-have the same ones), the same relative measure over the rows. Monitor
+have the same ones), the same relative measure over the rows. The
+components of a vector (columns named <stem>x, <stem>y[, <stem>z], e.g.
+dx dy, plate:onSolidx ...) share one scale, the largest |old| of any of
+them: a component that stays near zero (the x-displacement of a beam bent
+in y) is measured against the vector it belongs to, not against its own
+round-off. Monitor
 files are written with fewer digits than the clouds (12 significant
 digits, the coupling's forces.dat 6): a column whose difference exceeds
 the tolerance but stays within one unit of the last printed digit of
@@ -246,6 +251,17 @@ def compare_monitors(old, new, result):
             rows.append((f, "", count, None, "different number of rows"))
             result.failures.append("%s: %s rows" % (f, count))
             continue
+        def vector_scale(name):
+            """Largest |old| of the vector column name belongs to"""
+            if name[-1:] not in ("x", "y", "z"):
+                return None
+            stem = name[:-1]
+            group = [k for k, n in enumerate(nold)
+                     if n[:-1] == stem and n[-1:] in ("x", "y", "z")]
+            if len(group) < 2:
+                return None
+            return float(np.abs(vold[:, group]).max()) if len(vold) else 0.0
+
         for k, c in enumerate(nold):
             if c not in nnew:
                 rows.append((f, c, count, None, "only in old"))
@@ -253,7 +269,9 @@ def compare_monitors(old, new, result):
                 continue
             j = nnew.index(c)
             a, b = vold[:, k], vnew[:, j]
-            scale = float(np.abs(a).max()) if a.size else 0.0
+            scale = vector_scale(c)
+            if scale is None:
+                scale = float(np.abs(a).max()) if a.size else 0.0
             rel = relative(max_abs_diff(a, b), scale)
             note = ""
             worst_row = int(np.argmax(np.abs(b - a))) if a.size else 0
