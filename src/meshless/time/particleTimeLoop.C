@@ -37,6 +37,7 @@ Foam::meshless::particleTimeLoop::particleTimeLoop
     writeControl_(runTime.controlDict().get<word>("writeControl")),
     writeInterval_(readPositive(runTime.controlDict(), "writeInterval"))
 {
+    checkEndTime(runTime);
     if (adjustTimeStep_ && !runTime.controlDict().found("maxCo"))
     {
         FatalIOErrorInFunction(runTime.controlDict())
@@ -44,6 +45,35 @@ Foam::meshless::particleTimeLoop::particleTimeLoop
             << " Courant number of the adaptive step (e.g. maxCo 0.25;)"
             << exit(FatalIOError);
     }
+}
+
+
+void Foam::meshless::particleTimeLoop::checkEndTime(const Time& runTime)
+{
+    const dictionary& dict = runTime.controlDict();
+    if (dict.getOrDefault<word>("stopAt", "endTime") != "endTime")
+    {
+        return;
+    }
+    const scalar start = runTime.value();
+    const scalar end = runTime.endTime().value();
+    if (start < end - 0.5*runTime.deltaTValue())
+    {
+        return;
+    }
+
+    const entry* e = dict.findEntry("endTime", keyType::LITERAL);
+    FatalIOError
+    (
+        FUNCTION_NAME, __FILE__, __LINE__, dict.name(),
+        e ? e->startLineNumber() : -1, e ? e->endLineNumber() : -1
+    )   << "endTime " << runTime.timeName(end) << " is "
+        << (end <= start ? "at or before" : "less than half a step after")
+        << " the start time " << runTime.timeName() << " (startFrom "
+        << dict.getOrDefault<word>("startFrom", "latestTime")
+        << "): nothing to run. Expected endTime > " << runTime.timeName()
+        << " (by at least half of deltaT " << runTime.deltaTValue() << ")"
+        << exit(FatalIOError);
 }
 
 
