@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "lagrangianIO.H"
+#include "atomicTimeWriter.H"
 #include "IOField.H"
 #include "IOobjectList.H"
 #include "OFstream.H"
@@ -106,6 +107,45 @@ void fromFoam
 }
 
 
+//- Write a list as an IOField file at timeName in writeFormat and
+//  writeCompression. Written directly rather than by regIOobject::write,
+//  which moves an object to the Time's current name: timeName may be the
+//  temporary directory of an atomic write (atomicTimeWriter), and the
+//  header's location names the time it stands for.
+template<class Type>
+void writeList
+(
+    const word& name,
+    const UList<Type>& values,
+    const Time& runTime,
+    const word& timeName,
+    const word& body
+)
+{
+    const IOobject io(cloudObject(name, runTime, timeName, body));
+    const IOobject header
+    (
+        cloudObject(name, runTime, atomicTimeWriter::timeOf(timeName), body)
+    );
+    mkDir(io.path());
+    OFstream os
+    (
+        io.objectPath(),
+        runTime.writeFormat(),
+        IOstream::currentVersion,
+        runTime.writeCompression()
+    );
+    header.writeHeader(os, IOField<Type>::typeName);
+    os  << values;
+    IOobject::writeEndDivider(os);
+    if (!os.good())
+    {
+        FatalErrorInFunction
+            << "Failed writing " << os.name() << exit(FatalError);
+    }
+}
+
+
 template<class Type>
 void writeTypedField
 (
@@ -116,9 +156,9 @@ void writeTypedField
     const word& body
 )
 {
-    IOField<Type> out(cloudObject(f.name(), runTime, timeName, body), label(0));
+    Field<Type> out;
     toFoam(f, dim, out);
-    out.write();
+    writeList(f.name(), out, runTime, timeName, body);
 }
 
 
@@ -355,10 +395,20 @@ void Foam::meshless::lagrangianIO::write
     (
         cloudObject(particleSet::positionsName, runTime, timeName, set.name())
     );
+    const IOobject posHeader
+    (
+        cloudObject
+        (
+            particleSet::positionsName,
+            runTime,
+            atomicTimeWriter::timeOf(timeName),
+            set.name()
+        )
+    );
     mkDir(posIO.path());
     {
         OFstream os(posIO.objectPath(), IOstream::ASCII);
-        posIO.writeHeader(os, "Cloud<passiveParticle>");
+        posHeader.writeHeader(os, "Cloud<passiveParticle>");
         os  << n << nl << token::BEGIN_LIST << nl;
         for (label i = 0; i < n; ++i)
         {
@@ -376,9 +426,9 @@ void Foam::meshless::lagrangianIO::write
     }
 
     {
-        IOField<label> ids(cloudObject("id", runTime, timeName, set.name()), n);
+        labelList ids(n);
         std::copy(set.ids().begin(), set.ids().end(), ids.begin());
-        ids.write();
+        writeList("id", ids, runTime, timeName, set.name());
     }
 
     for (const word& name : set.fieldNames())

@@ -252,6 +252,13 @@ void Foam::meshless::particleScene::checkState
 
 void Foam::meshless::particleScene::write()
 {
+    writeState();
+    writeVtk();
+}
+
+
+void Foam::meshless::particleScene::writeState()
+{
     costAccounting::scope timer(costs_, writeCost_);
     const Time& runTime = mesh_.time();
     for (const particleBody& b : bodies_)
@@ -259,18 +266,23 @@ void Foam::meshless::particleScene::write()
         lagrangianIO::write(b.particles(), runTime, runTime.timeName(), zPlane_);
         b.model().write(runTime, runTime.timeName());
     }
-    if (vtp_)
+}
+
+
+void Foam::meshless::particleScene::writeVtk()
+{
+    if (!vtp_) return;
+    costAccounting::scope timer(costs_, writeCost_);
+    const Time& runTime = mesh_.time();
+    for (const particleBody& b : bodies_)
     {
-        for (const particleBody& b : bodies_)
-        {
-            vtpWriter::write
-            (
-                b.particles(),
-                runTime.path()/"VTK",
-                runTime.timeName(),
-                zPlane_
-            );
-        }
+        vtpWriter::write
+        (
+            b.particles(),
+            runTime.path()/"VTK",
+            runTime.timeName(),
+            zPlane_
+        );
     }
 }
 

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "particleTimeLoop.H"
+#include "atomicTimeWriter.H"
 #include "dictionaryChecks.H"
 #include <chrono>
 #include <cmath>
@@ -77,6 +78,17 @@ void Foam::meshless::particleTimeLoop::checkEndTime(const Time& runTime)
 }
 
 
+bool Foam::meshless::particleTimeLoop::lastStep() const
+{
+    // Time::run()'s test, without its side effects (function objects)
+    return
+        !(
+            runTime_.value()
+          < runTime_.endTime().value() - 0.5*runTime_.deltaTValue()
+        );
+}
+
+
 Foam::scalar Foam::meshless::particleTimeLoop::adaptiveDeltaT() const
 {
     scalar dt = min(scene_.maxDeltaT(maxCo_), maxDeltaT_);
@@ -117,6 +129,35 @@ void Foam::meshless::particleTimeLoop::run(const stepFunction& step)
             << " of the initial state (maxCo " << maxCo_ << ")" << nl << endl;
     }
 
+    // Everything of a write time goes into a temporary directory, renamed
+    // to the time once complete (atomicTimeWriter): the scene's state and
+    // OpenFOAM's uniform/time at the step, the function objects' state when
+    // Time::run executes them after it; committed then
+    atomicTimeWriter::removeLeftovers(runTime_);
+    atomicTimeWriter writer(runTime_);
+    auto running = [&]() -> bool
+    {
+        if (!writer.pending())
+        {
+            return runTime_.run();
+        }
+        bool r;
+        {
+            atomicTimeWriter::timeNameScope scope(runTime_, writer.instance());
+            r = runTime_.run();
+        }
+        writer.commit();
+        scene_.writeVtk();
+        return r;
+    };
+    auto writeState = [&]()
+    {
+        writer.begin();
+        atomicTimeWriter::timeNameScope scope(runTime_, writer.instance());
+        writer.writeTimeState();
+        scene_.writeState();
+    };
+
     const double start = wallSeconds();
     const scalar tStart = runTime_.value();
     double particleSteps = 0;
@@ -125,7 +166,7 @@ void Foam::meshless::particleTimeLoop::run(const stepFunction& step)
     Info<< "Starting time loop" << nl << endl;
     scene_.sampleMonitors(runTime_.value());
 
-    while (runTime_.run())
+    while (running())
     {
         if (adjustTimeStep_)
         {
@@ -140,12 +181,12 @@ void Foam::meshless::particleTimeLoop::run(const stepFunction& step)
         particleSteps += nParticles;
 
         scene_.checkState(lastWritten);
-        scene_.sampleMonitors(runTime_.value(), !runTime_.run());
+        scene_.sampleMonitors(runTime_.value(), lastStep());
 
-        runTime_.write();
         if (runTime_.writeTime())
         {
-            scene_.write();
+            // Committed by running(), before the next step's state check
+            writeState();
             lastWritten = runTime_.timeName();
         }
 
@@ -172,8 +213,9 @@ void Foam::meshless::particleTimeLoop::run(const stepFunction& step)
     {
         Info<< "Writing the final state at time " << runTime_.timeName()
             << " (not a write time)" << nl << endl;
-        runTime_.writeNow();
-        scene_.write();
+        writeState();
+        writer.commit();
+        scene_.writeVtk();
     }
 
     const double loop = wallSeconds() - start;
