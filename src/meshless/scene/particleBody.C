@@ -6,6 +6,7 @@
 #include "bodyModel.H"
 #include "effect.H"
 #include "lagrangianIO.H"
+#include "restartManifest.H"
 #include "dictionaryChecks.H"
 #include "OSspecific.H"
 #include <cmath>
@@ -29,6 +30,9 @@ Foam::meshless::particleBody::particleBody
     modelCost_(-1),
     effectCosts_()
 {
+    // A restart: every field and file the time's manifest lists
+    restartManifest::checkBody(runTime, runTime.timeName(), name);
+
     const fileName cloudDir =
         runTime.path()/runTime.timeName()/lagrangianIO::cloudLocal(name);
     if (!isFile(cloudDir/particleSet::positionsName))

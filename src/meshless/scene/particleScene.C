@@ -6,6 +6,7 @@
 #include "bodyModel.H"
 #include "lagrangianIO.H"
 #include "vtpWriter.H"
+#include "restartManifest.H"
 #include "Time.H"
 #include <cmath>
 #ifdef _OPENMP
@@ -261,11 +262,15 @@ void Foam::meshless::particleScene::writeState()
 {
     costAccounting::scope timer(costs_, writeCost_);
     const Time& runTime = mesh_.time();
-    for (const particleBody& b : bodies_)
+    UPtrList<const particleSet> sets(bodies_.size());
+    forAll(bodies_, i)
     {
+        const particleBody& b = bodies_[i];
         lagrangianIO::write(b.particles(), runTime, runTime.timeName(), zPlane_);
         b.model().write(runTime, runTime.timeName());
+        sets.set(i, &b.particles());
     }
+    restartManifest::write(sets, runTime, runTime.timeName());
 }
 
 
