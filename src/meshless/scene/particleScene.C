@@ -270,6 +270,7 @@ void Foam::meshless::particleScene::writeState()
         b.model().write(runTime, runTime.timeName());
         sets.set(i, &b.particles());
     }
+    monitor::writeStates(monitors_, runTime, runTime.timeName());
     restartManifest::write(sets, runTime, runTime.timeName());
 }
 
