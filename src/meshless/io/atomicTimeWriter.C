@@ -208,7 +208,10 @@ void Foam::meshless::atomicTimeWriter::begin()
 }
 
 
-void Foam::meshless::atomicTimeWriter::writeTimeState()
+void Foam::meshless::atomicTimeWriter::writeTimeState
+(
+    const dictionary& extra
+)
 {
     if (!pending())
     {
@@ -228,6 +231,7 @@ void Foam::meshless::atomicTimeWriter::writeTimeState()
     timeDict.add("index", runTime_.timeIndex());
     timeDict.add("deltaT", runTime_.timeToUserTime(runTime_.deltaTValue()));
     timeDict.add("deltaT0", runTime_.timeToUserTime(runTime_.deltaT0Value()));
+    timeDict.merge(extra);
 
     auto object = [&](const word& instance)
     {

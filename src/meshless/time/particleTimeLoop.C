@@ -5,6 +5,7 @@
 #include "particleTimeLoop.H"
 #include "atomicTimeWriter.H"
 #include "dictionaryChecks.H"
+#include "IOdictionary.H"
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -36,9 +37,35 @@ Foam::meshless::particleTimeLoop::particleTimeLoop
     maxCo_(readPositiveOrDefault(runTime.controlDict(), "maxCo", 0.25)),
     maxDeltaT_(readPositiveOrDefault(runTime.controlDict(), "maxDeltaT", GREAT)),
     writeControl_(runTime.controlDict().get<word>("writeControl")),
-    writeInterval_(readPositive(runTime.controlDict(), "writeInterval"))
+    writeInterval_(readPositive(runTime.controlDict(), "writeInterval")),
+    writeOrigin_(runTime.startTime().value())
 {
     checkEndTime(runTime);
+
+    // The write-time grid of the run's first start, when this start lies
+    // on it (a restart from a write time)
+    IOdictionary timeDict
+    (
+        IOobject
+        (
+            "time",
+            runTime.timeName(),
+            "uniform",
+            runTime,
+            IOobject::READ_IF_PRESENT,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    scalar origin = writeOrigin_;
+    if (timeDict.readIfPresent("writeOrigin", origin))
+    {
+        const scalar k = (runTime.value() - origin)/writeInterval_;
+        if (std::abs(k - std::round(k)) < 1e-6)
+        {
+            writeOrigin_ = origin;
+        }
+    }
     if (adjustTimeStep_ && !runTime.controlDict().found("maxCo"))
     {
         FatalIOErrorInFunction(runTime.controlDict())
@@ -78,6 +105,41 @@ void Foam::meshless::particleTimeLoop::checkEndTime(const Time& runTime)
 }
 
 
+void Foam::meshless::particleTimeLoop::restoreStartTime(Time& runTime)
+{
+    IOdictionary timeDict
+    (
+        IOobject
+        (
+            "time",
+            runTime.timeName(),
+            "uniform",
+            runTime,
+            IOobject::READ_IF_PRESENT,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    scalar value = runTime.value();
+    if
+    (
+        timeDict.readIfPresent("value", value)
+     && value != runTime.value()
+     && runTime.timeName(runTime.timeToUserTime(value)) == runTime.timeName()
+    )
+    {
+        runTime.setTime(value, runTime.timeIndex());
+    }
+}
+
+
+void Foam::meshless::particleTimeLoop::prepareStart(Time& runTime)
+{
+    restoreStartTime(runTime);
+    checkEndTime(runTime);
+}
+
+
 bool Foam::meshless::particleTimeLoop::lastStep() const
 {
     // Time::run()'s test, without its side effects (function objects)
@@ -100,7 +162,7 @@ Foam::scalar Foam::meshless::particleTimeLoop::adaptiveDeltaT() const
     scalar target = runTime_.endTime().value();
     if (writeControl_ == "adjustableRunTime")
     {
-        const scalar t0 = runTime_.startTime().value();
+        const scalar t0 = writeOrigin_;
         const scalar k = std::floor((t - t0)/writeInterval_ + 1e-9) + 1;
         target = min(target, t0 + k*writeInterval_);
     }
@@ -154,7 +216,9 @@ void Foam::meshless::particleTimeLoop::run(const stepFunction& step)
     {
         writer.begin();
         atomicTimeWriter::timeNameScope scope(runTime_, writer.instance());
-        writer.writeTimeState();
+        dictionary loopState;
+        loopState.add("writeOrigin", writeOrigin_);
+        writer.writeTimeState(loopState);
         scene_.writeState();
     };
 
