@@ -448,7 +448,29 @@ void Foam::meshless::restartManifest::checkBody
     {
         return;
     }
-    const dictionary manifest(readManifest(manifestFile));
+    dictionary manifest;
+    string err;
+    if (!guarded([&]() { manifest = readManifest(manifestFile); }, err))
+    {
+        const word earlier(latestComplete(runTime, timeName, wordList{body}));
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, manifestFile)
+            << "Restart time directory " << timeName << ": its restart"
+            << " manifest cannot be read (truncated or damaged: "
+            << err.c_str() << "). Expected the dictionary of 'bodies' and"
+            << " 'files' the solver writes last at each write time." << nl
+            << "    ";
+        if (earlier.empty())
+        {
+            FatalIOError << "No earlier time directory is complete.";
+        }
+        else
+        {
+            FatalIOError
+                << "The latest earlier complete time directory is "
+                << earlier.c_str() << ".";
+        }
+        FatalIOError << exit(FatalIOError);
+    }
     const dictionary& bodies = manifest.subDict("bodies");
     if (!bodies.found(body))
     {
@@ -468,8 +490,13 @@ void Foam::meshless::restartManifest::checkBody
     const word earlier(latestComplete(runTime, timeName, bodies.toc()));
     const fileName rel(file.relative(runTime.path()));
     FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file)
-        << "Restart time directory " << timeName << " is incomplete: body "
-        << body << ", " << rel.c_str() << ": " << why.c_str()
+        << "Restart time directory " << timeName << " is incomplete: ";
+    if (file.path() == runTime.path()/timeName/lagrangianIO::cloudLocal(body))
+    {
+        FatalIOError << "body " << body << ", ";
+    }
+    FatalIOError
+        << rel.c_str() << ": " << why.c_str()
         << "; expected " << expected.c_str() << ", as listed in "
         << timeName.c_str() << "/uniform/" << manifestName.c_str()
         << nl << "    ";
