@@ -40,7 +40,7 @@ Foam::meshless::particleBody::particleBody
         FatalIOErrorInFunction(dict)
             << "Body '" << name << "' has no particles at time "
             << runTime.timeName() << " (no " << cloudDir.name()
-            << " cloud): seeded bodies are "
+            << " cloud): expected one of the seeded bodies "
             << lagrangianIO::clouds(runTime, runTime.timeName())
             << ". Run seedParticles, or correct the body name."
             << exit(FatalIOError);
