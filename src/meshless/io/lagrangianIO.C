@@ -10,12 +10,17 @@
 #include "IFstream.H"
 #include "OSspecific.H"
 #include "cloud.H"
+#include <limits>
 
 namespace
 {
 
 using namespace Foam;
 using namespace Foam::meshless;
+
+//- Significant digits of ascii clouds, whatever writePrecision: a double
+//  read back from them is the one written (a restart continues exactly)
+const int restartPrecision = std::numeric_limits<double>::max_digits10;
 
 IOobject cloudObject
 (
@@ -135,6 +140,7 @@ void writeList
         IOstream::currentVersion,
         runTime.writeCompression()
     );
+    os.precision(max(os.precision(), restartPrecision));
     header.writeHeader(os, IOField<Type>::typeName);
     os  << values;
     IOobject::writeEndDivider(os);
@@ -408,6 +414,7 @@ void Foam::meshless::lagrangianIO::write
     mkDir(posIO.path());
     {
         OFstream os(posIO.objectPath(), IOstream::ASCII);
+        os.precision(max(os.precision(), restartPrecision));
         posHeader.writeHeader(os, "Cloud<passiveParticle>");
         os  << n << nl << token::BEGIN_LIST << nl;
         for (label i = 0; i < n; ++i)
