@@ -17,6 +17,8 @@
 
 const Foam::word Foam::meshless::atomicTimeWriter::prefix(".incomplete.");
 
+const Foam::word Foam::meshless::atomicTimeWriter::purgePrefix(".purged.");
+
 
 // * * * * * * * * * * * * * * * Helper classes  * * * * * * * * * * * * * * //
 
@@ -118,6 +120,12 @@ Foam::label Foam::meshless::atomicTimeWriter::removeLeftovers
     {
         Info<< "Removing " << name << ": an incomplete time directory left"
             << " by an interrupted write (never used for a restart)" << endl;
+        rmDir(dir/name);
+    }
+    for (const word& name : hiddenNames(dir, purgePrefix, ""))
+    {
+        Info<< "Removing " << name << ": a time directory purgeWrite had"
+            << " begun to remove" << endl;
         rmDir(dir/name);
     }
 
@@ -308,7 +316,15 @@ void Foam::meshless::atomicTimeWriter::commit()
         {
             // No atomic exchange on this file system: a moment without
             // the time, never a partial one
-            rmDir(dst);
+            const fileName hidden(runTime_.path()/(purgePrefix + pending_));
+            if (::rename(dst.c_str(), hidden.c_str()) == 0)
+            {
+                rmDir(hidden);
+            }
+            else
+            {
+                rmDir(dst);
+            }
         }
     }
     else if (exists(dst, false))
@@ -342,7 +358,14 @@ void Foam::meshless::atomicTimeWriter::commit()
     {
         while (label(written_.size()) > purge)
         {
-            rmDir(runTime_.path()/written_.front());
+            // Hidden first, then removed: a kill while removing leaves no
+            // partial time directory
+            const fileName old(runTime_.path()/written_.front());
+            const fileName hidden(runTime_.path()/(purgePrefix + written_.front()));
+            if (::rename(old.c_str(), hidden.c_str()) == 0)
+            {
+                rmDir(hidden);
+            }
             written_.pop_front();
         }
     }
