@@ -120,12 +120,17 @@ void Foam::meshless::particleTimeLoop::restoreStartTime(Time& runTime)
             false
         )
     );
-    scalar value = runTime.value();
+    // Written in user time, as Time writes it
+    scalar userValue = 0;
+    if (!timeDict.readIfPresent("value", userValue))
+    {
+        return;
+    }
+    const scalar value = runTime.userTimeToTime(userValue);
     if
     (
-        timeDict.readIfPresent("value", value)
-     && value != runTime.value()
-     && runTime.timeName(runTime.timeToUserTime(value)) == runTime.timeName()
+        value != runTime.value()
+     && runTime.timeName(userValue) == runTime.timeName()
     )
     {
         runTime.setTime(value, runTime.timeIndex());
