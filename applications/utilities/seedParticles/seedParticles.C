@@ -248,7 +248,10 @@ int main(int argc, char *argv[])
                 << "Body " << body << ": "
                 << (walls ? "its patches yield" : "its region yields")
                 << " no particle at spacing " << dx
-                << " (mesh bounds " << meshBb << ")" << exit(FatalIOError);
+                << " (mesh bounds " << meshBb << "): expected "
+                << (walls ? "patches" : "a region")
+                << " holding at least one lattice point inside the mesh"
+                << exit(FatalIOError);
         }
 
         sets.emplace_back(new particleSet(body, dim));

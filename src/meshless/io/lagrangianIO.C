@@ -3,18 +3,24 @@
 \*---------------------------------------------------------------------------*/
 
 #include "lagrangianIO.H"
+#include "atomicTimeWriter.H"
 #include "IOField.H"
 #include "IOobjectList.H"
 #include "OFstream.H"
 #include "IFstream.H"
 #include "OSspecific.H"
 #include "cloud.H"
+#include <limits>
 
 namespace
 {
 
 using namespace Foam;
 using namespace Foam::meshless;
+
+//- Significant digits of ascii clouds, whatever writePrecision: a double
+//  read back from them is the one written (a restart continues exactly)
+const int restartPrecision = std::numeric_limits<double>::max_digits10;
 
 IOobject cloudObject
 (
@@ -106,6 +112,46 @@ void fromFoam
 }
 
 
+//- Write a list as an IOField file at timeName in writeFormat and
+//  writeCompression. Written directly rather than by regIOobject::write,
+//  which moves an object to the Time's current name: timeName may be the
+//  temporary directory of an atomic write (atomicTimeWriter), and the
+//  header's location names the time it stands for.
+template<class Type>
+void writeList
+(
+    const word& name,
+    const UList<Type>& values,
+    const Time& runTime,
+    const word& timeName,
+    const word& body
+)
+{
+    const IOobject io(cloudObject(name, runTime, timeName, body));
+    const IOobject header
+    (
+        cloudObject(name, runTime, atomicTimeWriter::timeOf(timeName), body)
+    );
+    mkDir(io.path());
+    OFstream os
+    (
+        io.objectPath(),
+        runTime.writeFormat(),
+        IOstream::currentVersion,
+        runTime.writeCompression()
+    );
+    os.precision(max(os.precision(), restartPrecision));
+    header.writeHeader(os, IOField<Type>::typeName);
+    os  << values;
+    IOobject::writeEndDivider(os);
+    if (!os.good())
+    {
+        FatalErrorInFunction
+            << "Failed writing " << os.name() << exit(FatalError);
+    }
+}
+
+
 template<class Type>
 void writeTypedField
 (
@@ -116,9 +162,49 @@ void writeTypedField
     const word& body
 )
 {
-    IOField<Type> out(cloudObject(f.name(), runTime, timeName, body), label(0));
+    Field<Type> out;
     toFoam(f, dim, out);
-    out.write();
+    writeList(f.name(), out, runTime, timeName, body);
+}
+
+
+//- Read a field file of a cloud; a file the parser cannot read (truncated,
+//  damaged) is a FatalIOError that says so, names the cloud and keeps the
+//  parser's message and line
+template<class Type>
+autoPtr<IOField<Type>> readIOField(const IOobject& io, const word& cloudName)
+{
+    const bool oldIO = FatalIOError.throwExceptions();
+    const bool old = FatalError.throwExceptions();
+    autoPtr<IOField<Type>> f;
+    string why;
+    label line = -1;
+    try
+    {
+        f.reset(new IOField<Type>(io));
+    }
+    catch (const Foam::error& e)
+    {
+        why = e.message();
+        if (const IOerror* ioe = dynamic_cast<const IOerror*>(&e))
+        {
+            line = ioe->ioStartLineNumber();
+        }
+    }
+    FatalIOError.throwExceptions(oldIO);
+    FatalError.throwExceptions(old);
+    if (!f.valid())
+    {
+        FatalIOError
+        (
+            FUNCTION_NAME, __FILE__, __LINE__, io.objectPath(), line
+        )   << "Cannot read field " << io.name() << " of cloud " << cloudName
+            << " at time " << io.instance().c_str() << ": the file is"
+            << " truncated or damaged (" << why.c_str() << "). Expected a "
+            << IOField<Type>::typeName << " with an entry per particle"
+            << exit(FatalIOError);
+    }
+    return f;
 }
 
 
@@ -133,17 +219,140 @@ void readFields
     for (const word& name : objects.sortedNames(IOField<Type>::typeName))
     {
         if (name == particleSet::positionsName) continue;
-        IOField<Type> in(*objects.findObject(name));
+        const autoPtr<IOField<Type>> pIn
+        (
+            readIOField<Type>(*objects.findObject(name), set.name())
+        );
+        const IOField<Type>& in = pIn();
         if (in.size() != set.size())
         {
-            FatalErrorInFunction
-                << in.objectPath() << ": field " << name << " has "
-                << in.size()
-                << " entries, the cloud has " << set.size() << " particles"
+            FatalIOError
+            (
+                FUNCTION_NAME, __FILE__, __LINE__, in.objectPath()
+            )   << "Field " << name << " of cloud " << set.name()
+                << " has " << in.size() << " entries, the cloud has "
+                << set.size() << " particles (its positions): expected "
+                << set.size() << " entries, one per particle"
                 << exit(FatalIOError);
         }
         fromFoam(in, set.dim(), set.addField(name, k));
     }
+}
+
+//- What was found where a token was expected: the token, or the end of
+//  the file
+void describeFound(Istream& is, const token& t, const label i, const label n)
+{
+    if (!is.good() || t.undefined() || t.error())
+    {
+        FatalIOError
+            << "the end of the file: the file is truncated";
+        if (i >= 0)
+        {
+            FatalIOError
+                << " (it ends at particle " << i << " of the " << n
+                << " its count announces)";
+        }
+    }
+    else
+    {
+        FatalIOError << t.info();
+    }
+}
+
+
+//- The particle count at the start of a positions file, and its '('
+label readPositionsCount(Istream& is, const fileName& file)
+{
+    token t(is);
+    if (!is.good() || !t.isLabel() || t.labelToken() < 0)
+    {
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file, is.lineNumber())
+            << "Expected the particle count after the header, found ";
+        describeFound(is, t, -1, 0);
+        FatalIOError << exit(FatalIOError);
+    }
+    const label n = t.labelToken();
+    token open(is);
+    if
+    (
+        !is.good()
+     || !open.isPunctuation()
+     || open.pToken() != token::BEGIN_LIST
+    )
+    {
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file, is.lineNumber())
+            << "Expected '(' after the particle count " << n << ", found ";
+        describeFound(is, open, 0, n);
+        FatalIOError << exit(FatalIOError);
+    }
+    return n;
+}
+
+
+//- Particle i's line (i == n: the list's end) is not what it should be
+void positionsError
+(
+    Istream& is,
+    const fileName& file,
+    const label i,
+    const label n,
+    const char* expected,
+    const token& found
+)
+{
+    FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file, is.lineNumber());
+    if (i < n)
+    {
+        FatalIOError
+            << "Particle " << i << " of " << n << ": expected " << expected
+            << " in its line '(x y z) celli', found ";
+    }
+    else
+    {
+        FatalIOError
+            << "After the " << n << " particles its count announces:"
+            << " expected " << expected << ", found ";
+    }
+    describeFound(is, found, i, n);
+    FatalIOError << exit(FatalIOError);
+}
+
+
+void expectPunctuation
+(
+    Istream& is,
+    const fileName& file,
+    const token::punctuationToken p,
+    const label i,
+    const label n,
+    const char* expected
+)
+{
+    token t(is);
+    if (!is.good() || !t.isPunctuation() || t.pToken() != p)
+    {
+        positionsError(is, file, i, n, expected, t);
+    }
+}
+
+
+//- A coordinate or the cell label of particle i
+token readPositionNumber
+(
+    Istream& is,
+    const fileName& file,
+    const label i,
+    const label n,
+    const char* expected
+)
+{
+    token t(is);
+    if (!is.good() || !t.isNumber())
+    {
+        positionsError(is, file, i, n, expected, t);
+    }
+    return t;
 }
 
 } // End anonymous namespace
@@ -192,10 +401,21 @@ void Foam::meshless::lagrangianIO::write
     (
         cloudObject(particleSet::positionsName, runTime, timeName, set.name())
     );
+    const IOobject posHeader
+    (
+        cloudObject
+        (
+            particleSet::positionsName,
+            runTime,
+            atomicTimeWriter::timeOf(timeName),
+            set.name()
+        )
+    );
     mkDir(posIO.path());
     {
         OFstream os(posIO.objectPath(), IOstream::ASCII);
-        posIO.writeHeader(os, "Cloud<passiveParticle>");
+        os.precision(max(os.precision(), restartPrecision));
+        posHeader.writeHeader(os, "Cloud<passiveParticle>");
         os  << n << nl << token::BEGIN_LIST << nl;
         for (label i = 0; i < n; ++i)
         {
@@ -213,9 +433,9 @@ void Foam::meshless::lagrangianIO::write
     }
 
     {
-        IOField<label> ids(cloudObject("id", runTime, timeName, set.name()), n);
+        labelList ids(n);
         std::copy(set.ids().begin(), set.ids().end(), ids.begin());
-        ids.write();
+        writeList("id", ids, runTime, timeName, set.name());
     }
 
     for (const word& name : set.fieldNames())
@@ -273,40 +493,77 @@ void Foam::meshless::lagrangianIO::read
             IOobject::MUST_READ
         )
     );
-    IFstream is(posIO.objectPath());
-    if (!is.good() || !posIO.readHeader(is))
+    const fileName posFile(posIO.objectPath());
+    IFstream is(posFile);
+    if (!is.good())
     {
-        FatalIOErrorInFunction(is)
-            << "Cannot read the positions of cloud " << set.name()
-            << " at time " << timeName << exit(FatalIOError);
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, posFile)
+            << "Cannot open the positions of cloud " << set.name()
+            << " at time " << timeName << ": expected a readable file"
+            << exit(FatalIOError);
+    }
+    if (!posIO.readHeader(is))
+    {
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, posFile)
+            << "Cannot read the header of the positions of cloud "
+            << set.name() << " at time " << timeName << " (empty or"
+            << " truncated?): expected a FoamFile header of class "
+            << "Cloud<passiveParticle>" << exit(FatalIOError);
     }
 
-    const label n = readLabel(is);
+    // Every token checked, so that a truncated or damaged file says where
+    // it ends instead of failing in the parser or reading garbage
+    const label n = readPositionsCount(is, posFile);
     set.resize(n);
     particleField& x = set.positions();
-    is.readBegin("positions");
     for (label i = 0; i < n; ++i)
     {
+        expectPunctuation(is, posFile, token::BEGIN_LIST, i, n, "'('");
         vector p;
-        label celli;
-        is >> p >> celli;
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            p[d] = readPositionNumber(is, posFile, i, n, "a coordinate")
+                .number();
+        }
+        expectPunctuation
+        (
+            is, posFile, token::END_LIST, i, n, "')' after three coordinates"
+        );
+        if (!readPositionNumber(is, posFile, i, n, "a cell label").isLabel())
+        {
+            FatalIOError
+            (
+                FUNCTION_NAME, __FILE__, __LINE__, posFile, is.lineNumber()
+            )   << "Particle " << i << " of " << n << ": expected a cell"
+                << " label (an integer, -1) after the position"
+                << exit(FatalIOError);
+        }
         for (label d = 0; d < dim; ++d) x(i, d) = p[d];
     }
-    is.readEnd("positions");
-    is.check(FUNCTION_NAME);
+    expectPunctuation
+    (
+        is, posFile, token::END_LIST, n, n, "')' closing the list"
+    );
 
     IOobjectList objects(runTime, timeName, cloudLocal(set.name()));
 
     const IOobject* idIO = objects.findObject("id");
     if (idIO)
     {
-        IOField<label> ids(*idIO);
+        const autoPtr<IOField<label>> pIds
+        (
+            readIOField<label>(*idIO, set.name())
+        );
+        const IOField<label>& ids = pIds();
         if (ids.size() != n)
         {
-            FatalErrorInFunction
-                << ids.objectPath() << ": " << ids.size()
-                << " ids for " << n << " positions"
-                << exit(FatalIOError);
+            FatalIOError
+            (
+                FUNCTION_NAME, __FILE__, __LINE__, ids.objectPath()
+            )   << "The id field of cloud " << set.name() << " has "
+                << ids.size() << " entries, the cloud has " << n
+                << " particles (its positions): expected " << n
+                << " ids, one per particle" << exit(FatalIOError);
         }
         set.setIds(std::vector<label>(ids.begin(), ids.end()));
     }

@@ -17,9 +17,45 @@
 #include "OFstream.H"
 #include "error.H"
 #include <algorithm>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
+#include <fcntl.h>
+#include <unistd.h>
 #include <utility>
 #include <vector>
+
+namespace
+{
+
+//- fsync a file (or directory)
+void syncPath(const Foam::fileName& path)
+{
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd >= 0)
+    {
+        ::fsync(fd);
+        ::close(fd);
+    }
+}
+
+
+//- Sync a completely written file and rename it into place
+void commitFile(const Foam::fileName& tmp, const Foam::fileName& file)
+{
+    using namespace Foam;
+    syncPath(tmp);
+    if (::rename(tmp.c_str(), file.c_str()) != 0)
+    {
+        FatalErrorInFunction
+            << "Cannot rename " << tmp << " to " << file << ": "
+            << std::strerror(errno) << exit(FatalError);
+    }
+    syncPath(file.path());
+}
+
+} // End anonymous namespace
+
 
 void Foam::meshless::vtpWriter::write
 (
@@ -97,18 +133,23 @@ void Foam::meshless::vtpWriter::write
 
     const fileName bodyDir = dir/set.name();
     mkDir(bodyDir);
-    const fileName file = bodyDir/(set.name() + "_" + timeName + ".vtp");
+    const word fileBase(set.name() + "_" + timeName + ".vtp");
+    const fileName file = bodyDir/fileBase;
 
+    // Written under a hidden name, synced and renamed: a killed run leaves
+    // no partial .vtp (the collection below skips hidden names)
+    const fileName tmpFile = bodyDir/("." + fileBase + ".incomplete");
     auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
-    writer->SetFileName(file.c_str());
+    writer->SetFileName(tmpFile.c_str());
     writer->SetInputData(poly);
     writer->SetDataModeToAppended();
     writer->EncodeAppendedDataOff();
     if (writer->Write() != 1)
     {
         FatalErrorInFunction
-            << "VTK could not write " << file << exit(FatalError);
+            << "VTK could not write " << tmpFile << exit(FatalError);
     }
+    commitFile(tmpFile, file);
 
     // The collection, from the files present (restart- and purge-proof)
     const std::string prefix = set.name() + "_";
@@ -124,14 +165,26 @@ void Foam::meshless::vtpWriter::write
     }
     std::sort(entries.begin(), entries.end());
 
-    OFstream pvd(dir/(set.name() + ".pvd"));
-    pvd << "<?xml version=\"1.0\"?>" << nl
-        << "<VTKFile type=\"Collection\" version=\"0.1\">" << nl
-        << "<Collection>" << nl;
-    for (const auto& e : entries)
+    // The collection replaced atomically: a killed run leaves the old one
+    // or the new one, never a truncated one
+    const fileName pvdFile = dir/(set.name() + ".pvd");
+    const fileName pvdTmp = dir/("." + set.name() + ".pvd.incomplete");
     {
-        pvd << "  <DataSet timestep=\"" << e.first << "\" file=\""
-            << set.name() << "/" << e.second.c_str() << "\"/>" << nl;
+        OFstream pvd(pvdTmp);
+        pvd << "<?xml version=\"1.0\"?>" << nl
+            << "<VTKFile type=\"Collection\" version=\"0.1\">" << nl
+            << "<Collection>" << nl;
+        for (const auto& e : entries)
+        {
+            pvd << "  <DataSet timestep=\"" << e.first << "\" file=\""
+                << set.name() << "/" << e.second.c_str() << "\"/>" << nl;
+        }
+        pvd << "</Collection>" << nl << "</VTKFile>" << nl;
+        if (!pvd.good())
+        {
+            FatalErrorInFunction
+                << "Failed writing " << pvdTmp << exit(FatalError);
+        }
     }
-    pvd << "</Collection>" << nl << "</VTKFile>" << nl;
+    commitFile(pvdTmp, pvdFile);
 }

@@ -6,6 +6,7 @@
 #include "bodyModel.H"
 #include "effect.H"
 #include "lagrangianIO.H"
+#include "restartManifest.H"
 #include "dictionaryChecks.H"
 #include "OSspecific.H"
 #include <cmath>
@@ -29,6 +30,9 @@ Foam::meshless::particleBody::particleBody
     modelCost_(-1),
     effectCosts_()
 {
+    // A restart: every field and file the time's manifest lists
+    restartManifest::checkBody(runTime, runTime.timeName(), name);
+
     const fileName cloudDir =
         runTime.path()/runTime.timeName()/lagrangianIO::cloudLocal(name);
     if (!isFile(cloudDir/particleSet::positionsName))
@@ -36,7 +40,7 @@ Foam::meshless::particleBody::particleBody
         FatalIOErrorInFunction(dict)
             << "Body '" << name << "' has no particles at time "
             << runTime.timeName() << " (no " << cloudDir.name()
-            << " cloud): seeded bodies are "
+            << " cloud): expected one of the seeded bodies "
             << lagrangianIO::clouds(runTime, runTime.timeName())
             << ". Run seedParticles, or correct the body name."
             << exit(FatalIOError);
@@ -106,8 +110,8 @@ void Foam::meshless::particleBody::select(costAccounting& costs)
                     << "Effect '" << e.keyword() << "' of body '" << name_
                     << "' does not apply to its model "
                     << dict_.get<word>("model") << " (a "
-                    << bodyModel::modelRoleNames[role] << "): it applies to"
-                    << " the models " << models << exit(FatalIOError);
+                    << bodyModel::modelRoleNames[role] << "): expected a body of"
+                    << " one of the models " << models << exit(FatalIOError);
             }
         }
     }

@@ -7,6 +7,7 @@
 #include "solidModel.H"
 #include "lagrangianIO.H"
 #include "vtpWriter.H"
+#include "restartManifest.H"
 #include "Time.H"
 #include <cmath>
 #ifdef _OPENMP
@@ -263,25 +264,42 @@ void Foam::meshless::particleScene::checkState
 
 void Foam::meshless::particleScene::write()
 {
+    writeState();
+    writeVtk();
+}
+
+
+void Foam::meshless::particleScene::writeState()
+{
+    costAccounting::scope timer(costs_, writeCost_);
+    const Time& runTime = mesh_.time();
+    UPtrList<const particleSet> sets(bodies_.size());
+    forAll(bodies_, i)
+    {
+        const particleBody& b = bodies_[i];
+        lagrangianIO::write(b.particles(), runTime, runTime.timeName(), zPlane_);
+        b.model().write(runTime, runTime.timeName());
+        sets.set(i, &b.particles());
+    }
+    monitor::writeStates(monitors_, runTime, runTime.timeName());
+    restartManifest::write(sets, runTime, runTime.timeName());
+}
+
+
+void Foam::meshless::particleScene::writeVtk()
+{
+    if (!vtp_) return;
     costAccounting::scope timer(costs_, writeCost_);
     const Time& runTime = mesh_.time();
     for (const particleBody& b : bodies_)
     {
-        lagrangianIO::write(b.particles(), runTime, runTime.timeName(), zPlane_);
-        b.model().write(runTime, runTime.timeName());
-    }
-    if (vtp_)
-    {
-        for (const particleBody& b : bodies_)
-        {
-            vtpWriter::write
-            (
-                b.particles(),
-                runTime.path()/"VTK",
-                runTime.timeName(),
-                zPlane_
-            );
-        }
+        vtpWriter::write
+        (
+            b.particles(),
+            runTime.path()/"VTK",
+            runTime.timeName(),
+            zPlane_
+        );
     }
 }
 

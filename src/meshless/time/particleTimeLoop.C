@@ -3,12 +3,14 @@
 \*---------------------------------------------------------------------------*/
 
 #include "particleTimeLoop.H"
+#include "atomicTimeWriter.H"
 #include "dictionaryChecks.H"
 #include "OFstream.H"
 #include "OSspecific.H"
 #ifdef _OPENMP
 #include <omp.h>
 #endif
+#include "IOdictionary.H"
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -40,8 +42,35 @@ Foam::meshless::particleTimeLoop::particleTimeLoop
     maxCo_(readPositiveOrDefault(runTime.controlDict(), "maxCo", 0.25)),
     maxDeltaT_(readPositiveOrDefault(runTime.controlDict(), "maxDeltaT", GREAT)),
     writeControl_(runTime.controlDict().get<word>("writeControl")),
-    writeInterval_(readPositive(runTime.controlDict(), "writeInterval"))
+    writeInterval_(readPositive(runTime.controlDict(), "writeInterval")),
+    writeOrigin_(runTime.startTime().value())
 {
+    checkEndTime(runTime);
+
+    // The write-time grid of the run's first start, when this start lies
+    // on it (a restart from a write time)
+    IOdictionary timeDict
+    (
+        IOobject
+        (
+            "time",
+            runTime.timeName(),
+            "uniform",
+            runTime,
+            IOobject::READ_IF_PRESENT,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    scalar origin = writeOrigin_;
+    if (timeDict.readIfPresent("writeOrigin", origin))
+    {
+        const scalar k = (runTime.value() - origin)/writeInterval_;
+        if (std::abs(k - std::round(k)) < 1e-6)
+        {
+            writeOrigin_ = origin;
+        }
+    }
     if (adjustTimeStep_ && !runTime.controlDict().found("maxCo"))
     {
         FatalIOErrorInFunction(runTime.controlDict())
@@ -49,6 +78,86 @@ Foam::meshless::particleTimeLoop::particleTimeLoop
             << " Courant number of the adaptive step (e.g. maxCo 0.25;)"
             << exit(FatalIOError);
     }
+}
+
+
+void Foam::meshless::particleTimeLoop::checkEndTime(const Time& runTime)
+{
+    const dictionary& dict = runTime.controlDict();
+    if (dict.getOrDefault<word>("stopAt", "endTime") != "endTime")
+    {
+        return;
+    }
+    const scalar start = runTime.value();
+    const scalar end = runTime.endTime().value();
+    if (start < end - 0.5*runTime.deltaTValue())
+    {
+        return;
+    }
+
+    const entry* e = dict.findEntry("endTime", keyType::LITERAL);
+    FatalIOError
+    (
+        FUNCTION_NAME, __FILE__, __LINE__, dict.name(),
+        e ? e->startLineNumber() : -1, e ? e->endLineNumber() : -1
+    )   << "endTime " << runTime.timeName(end) << " is "
+        << (end <= start ? "at or before" : "less than half a step after")
+        << " the start time " << runTime.timeName() << " (startFrom "
+        << dict.getOrDefault<word>("startFrom", "latestTime")
+        << "): nothing to run. Expected endTime > " << runTime.timeName()
+        << " (by at least half of deltaT " << runTime.deltaTValue() << ")"
+        << exit(FatalIOError);
+}
+
+
+void Foam::meshless::particleTimeLoop::restoreStartTime(Time& runTime)
+{
+    IOdictionary timeDict
+    (
+        IOobject
+        (
+            "time",
+            runTime.timeName(),
+            "uniform",
+            runTime,
+            IOobject::READ_IF_PRESENT,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    // Written in user time, as Time writes it
+    scalar userValue = 0;
+    if (!timeDict.readIfPresent("value", userValue))
+    {
+        return;
+    }
+    const scalar value = runTime.userTimeToTime(userValue);
+    if
+    (
+        value != runTime.value()
+     && runTime.timeName(userValue) == runTime.timeName()
+    )
+    {
+        runTime.setTime(value, runTime.timeIndex());
+    }
+}
+
+
+void Foam::meshless::particleTimeLoop::prepareStart(Time& runTime)
+{
+    restoreStartTime(runTime);
+    checkEndTime(runTime);
+}
+
+
+bool Foam::meshless::particleTimeLoop::lastStep() const
+{
+    // Time::run()'s test, without its side effects (function objects)
+    return
+        !(
+            runTime_.value()
+          < runTime_.endTime().value() - 0.5*runTime_.deltaTValue()
+        );
 }
 
 
@@ -63,7 +172,7 @@ Foam::scalar Foam::meshless::particleTimeLoop::adaptiveDeltaT() const
     scalar target = runTime_.endTime().value();
     if (writeControl_ == "adjustableRunTime")
     {
-        const scalar t0 = runTime_.startTime().value();
+        const scalar t0 = writeOrigin_;
         const scalar k = std::floor((t - t0)/writeInterval_ + 1e-9) + 1;
         target = min(target, t0 + k*writeInterval_);
     }
@@ -147,6 +256,37 @@ void Foam::meshless::particleTimeLoop::run(const stepFunction& step)
             << " of the initial state (maxCo " << maxCo_ << ")" << nl << endl;
     }
 
+    // Everything of a write time goes into a temporary directory, renamed
+    // to the time once complete (atomicTimeWriter): the scene's state and
+    // OpenFOAM's uniform/time at the step, the function objects' state when
+    // Time::run executes them after it; committed then
+    atomicTimeWriter::removeLeftovers(runTime_);
+    atomicTimeWriter writer(runTime_);
+    auto running = [&]() -> bool
+    {
+        if (!writer.pending())
+        {
+            return runTime_.run();
+        }
+        bool r;
+        {
+            atomicTimeWriter::timeNameScope scope(runTime_, writer.instance());
+            r = runTime_.run();
+        }
+        writer.commit();
+        scene_.writeVtk();
+        return r;
+    };
+    auto writeState = [&]()
+    {
+        writer.begin();
+        atomicTimeWriter::timeNameScope scope(runTime_, writer.instance());
+        dictionary loopState;
+        loopState.add("writeOrigin", writeOrigin_);
+        writer.writeTimeState(loopState);
+        scene_.writeState();
+    };
+
     const double start = wallSeconds();
     const scalar tStart = runTime_.value();
     double particleSteps = 0;
@@ -156,7 +296,7 @@ void Foam::meshless::particleTimeLoop::run(const stepFunction& step)
     Info<< "Starting time loop" << nl << endl;
     scene_.sampleMonitors(runTime_.value());
 
-    while (runTime_.run())
+    while (running())
     {
         if (adjustTimeStep_)
         {
@@ -172,12 +312,12 @@ void Foam::meshless::particleTimeLoop::run(const stepFunction& step)
         ++steps;
 
         scene_.checkState(lastWritten);
-        scene_.sampleMonitors(runTime_.value(), !runTime_.run());
+        scene_.sampleMonitors(runTime_.value(), lastStep());
 
-        runTime_.write();
         if (runTime_.writeTime())
         {
-            scene_.write();
+            // Committed by running(), before the next step's state check
+            writeState();
             lastWritten = runTime_.timeName();
             writeRunCost(wallSeconds() - start, steps, particleSteps, false);
         }
@@ -205,8 +345,9 @@ void Foam::meshless::particleTimeLoop::run(const stepFunction& step)
     {
         Info<< "Writing the final state at time " << runTime_.timeName()
             << " (not a write time)" << nl << endl;
-        runTime_.writeNow();
-        scene_.write();
+        writeState();
+        writer.commit();
+        scene_.writeVtk();
     }
 
     const double loop = wallSeconds() - start;

@@ -59,8 +59,8 @@ Foam::meshless::bodyModels::ghostWall::ghostWall
     {
         FatalIOErrorInFunction(dict)
             << "Body '" << body.name() << "' is a fixed ghost wall: its"
-            << " particles never move, so effects do not apply; remove"
-            << " 'effects'" << exit(FatalIOError);
+            << " particles never move, so effects do not apply: expected"
+            << " no 'effects' entry" << exit(FatalIOError);
     }
 }
 

@@ -6,6 +6,7 @@
 #include "particleScene.H"
 #include "bodyModel.H"
 #include "gravity.H"
+#include "restartManifest.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -52,6 +53,39 @@ Foam::meshless::monitors::energy::energy
     {
         potential0_[k] = potential(*bodies_[k]);
     }
+
+    // A restart: the references of the run's first sample
+    const Time& runTime = scene.time();
+    const dictionary* state = restartState();
+    const dictionary* refs = state ? state->findDict("potential0") : nullptr;
+    if (refs)
+    {
+        forAll(bodies_, k)
+        {
+            const word& b = bodies_[k]->name();
+            if (refs->found(b))
+            {
+                potential0_[k] = refs->get<scalar>(b);
+            }
+            else
+            {
+                WarningInFunction
+                    << "Monitor " << name << ": no potential energy"
+                    << " reference of body " << b << " in "
+                    << runTime.timeName()/"uniform"/stateName
+                    << ": its potential starts from zero at time "
+                    << runTime.timeName() << endl;
+            }
+        }
+    }
+    else if (restartManifest::found(runTime, runTime.timeName()))
+    {
+        WarningInFunction
+            << "Monitor " << name << ": the restart time "
+            << runTime.timeName() << " holds no potential energy reference"
+            << " (written before monitors kept one): the potential starts"
+            << " from zero at the restart time" << endl;
+    }
 }
 
 
@@ -82,6 +116,17 @@ Foam::scalar Foam::meshless::monitors::energy::potential
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::meshless::monitors::energy::writeState(dictionary& dict) const
+{
+    dictionary refs;
+    forAll(bodies_, k)
+    {
+        refs.add(bodies_[k]->name(), potential0_[k]);
+    }
+    dict.add("potential0", refs);
+}
+
 
 Foam::wordList Foam::meshless::monitors::energy::columns() const
 {

@@ -6,6 +6,10 @@
 #include "particleScene.H"
 #include "dictionaryChecks.H"
 #include "OSspecific.H"
+#include "IFstream.H"
+#include "IOdictionary.H"
+#include "atomicTimeWriter.H"
+#include <limits>
 
 namespace Foam
 {
@@ -15,6 +19,8 @@ namespace meshless
     defineRunTimeSelectionTable(monitor, dictionary);
 }
 }
+
+const Foam::word Foam::meshless::monitor::stateName("monitors");
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -31,7 +37,6 @@ Foam::meshless::monitor::monitor
     (
         dict.found("interval") ? readPositiveLabel(dict, "interval") : 1
     ),
-    calls_(0),
     lastTime_(-GREAT),
     dict_(dict),
     scene_(scene)
@@ -88,7 +93,10 @@ Foam::OFstream& Foam::meshless::monitor::file()
 
 void Foam::meshless::monitor::sample(const scalar t, const bool force)
 {
-    if ((force || calls_ % interval_ == 0) && t != lastTime_)
+    const Time& runTime = scene_.time();
+    const bool first = !file_.valid();
+    const bool onInterval = runTime.timeIndex() % interval_ == 0;
+    if ((first || force || onInterval) && t != lastTime_)
     {
         lastTime_ = t;
         OFstream& os = file();
@@ -96,7 +104,101 @@ void Foam::meshless::monitor::sample(const scalar t, const bool force)
         writeValues(os);
         os << endl;
     }
-    ++calls_;
+}
+
+
+const Foam::dictionary* Foam::meshless::monitor::restartState() const
+{
+    // Read once per process: every monitor of a scene asks at construction
+    static autoPtr<dictionary> states;
+    static fileName statesFile;
+
+    const Time& runTime = scene_.time();
+    const fileName file
+    (
+        runTime.path()/runTime.timeName()/"uniform"/stateName
+    );
+    if (statesFile != file)
+    {
+        statesFile = file;
+        states.clear();
+        if (isFile(file))
+        {
+            IFstream is(file);
+            IOobject io
+            (
+                stateName,
+                runTime.timeName(),
+                "uniform",
+                runTime,
+                IOobject::MUST_READ,
+                IOobject::NO_WRITE,
+                false
+            );
+            if (!io.readHeader(is))
+            {
+                FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file)
+                    << "Cannot read the header of the monitors' restart"
+                    << " state (empty or truncated): expected a dictionary"
+                    << " with an entry per monitor" << exit(FatalIOError);
+            }
+            states.reset(new dictionary(is));
+        }
+    }
+    return states.valid() ? states->findDict(name_) : nullptr;
+}
+
+
+void Foam::meshless::monitor::writeStates
+(
+    const PtrList<monitor>& monitors,
+    const Time& runTime,
+    const word& instance
+)
+{
+    dictionary states;
+    for (const monitor& m : monitors)
+    {
+        dictionary d;
+        m.writeState(d);
+        if (!d.empty())
+        {
+            states.add(m.name(), d);
+        }
+    }
+    if (states.empty())
+    {
+        return;
+    }
+
+    auto object = [&](const word& inst)
+    {
+        return IOobject
+        (
+            stateName,
+            inst,
+            "uniform",
+            runTime,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        );
+    };
+    const IOobject io(object(instance));
+    mkDir(io.path());
+    OFstream os(io.objectPath(), IOstream::ASCII);
+    os.precision(std::numeric_limits<scalar>::max_digits10);
+    object(atomicTimeWriter::timeOf(instance))
+        .writeHeader(os, IOdictionary::typeName);
+    os  << "// The monitors' state a restart needs to continue their series"
+        << nl << nl;
+    states.write(os, false);
+    IOobject::writeEndDivider(os);
+    if (!os.good())
+    {
+        FatalErrorInFunction
+            << "Failed writing " << os.name() << exit(FatalError);
+    }
 }
 
 

@@ -40,7 +40,8 @@ Foam::meshless::monitors::pointDisplacement::pointDisplacement
     {
         FatalIOErrorInFunction(dict)
             << "body " << body_.name() << " has no reference positions X0"
-            << " (a solid model's field): a point displacement needs them"
+            << " (a solid model's field): a point displacement needs them;"
+            << " expected a body of a solid model (nosbPd, tlsph)"
             << exit(FatalIOError);
     }
     const particleField& X0 = set.field("X0");
@@ -51,9 +52,13 @@ Foam::meshless::monitors::pointDisplacement::pointDisplacement
         const label id = dict.get<label>("id");
         if (set.findId(id) < 0)
         {
+            label maxId = -1;
+            for (const label i : set.ids()) maxId = max(maxId, i);
             FatalIOErrorInFunction(dict)
                 << "id " << id << ": body " << body_.name()
-                << " has no particle with that id" << exit(FatalIOError);
+                << " has no particle with that id; expected the id of one"
+                << " of its " << set.size() << " particles (ids up to "
+                << maxId << ")" << exit(FatalIOError);
         }
         ids_ = labelList(1, id);
         weights_ = scalarList(1, 1.0);
@@ -82,7 +87,8 @@ Foam::meshless::monitors::pointDisplacement::pointDisplacement
         FatalIOErrorInFunction(dict)
             << "point " << p << ": no particle of body " << body_.name()
             << " within the kernel radius " << W.radius()
-            << " (reference configuration)" << exit(FatalIOError);
+            << " (reference configuration): expected a point inside or"
+            << " next to the body, or a particle id" << exit(FatalIOError);
     }
     if (found < 0)
     {

@@ -118,7 +118,8 @@ Foam::meshless::solidConstraints::solidConstraints
             FatalIOErrorInFunction(d)
                 << "constraint " << e.keyword() << ": no particle of body "
                 << particles.name() << " lies in its region (or every one"
-                << " belongs to an earlier constraint)" << exit(FatalIOError);
+                << " belongs to an earlier constraint): expected a region"
+                << " holding at least one particle" << exit(FatalIOError);
         }
     }
 
