@@ -41,9 +41,20 @@ Foam::meshless::bodyModels::ghostWall::ghostWall
         ),
         word::null
     ),
+    referenceRead_
+    (
+        dict.found("motion") && body.particles().found("x0")
+     && body.particles().found("n0") && body.particles().found("Mwall")
+    ),
     U_(body.particles().addField("U", particleField::kind::vector)),
     normal_(body.requireField("normal", "model ghostWall")),
-    Mwall_(body.particles().addScratchField("Mwall", particleField::kind::tensor)),
+    // A moving wall writes its reference frame (restart state)
+    Mwall_
+    (
+        dict.found("motion")
+      ? body.particles().addField("Mwall", particleField::kind::tensor)
+      : body.particles().addScratchField("Mwall", particleField::kind::tensor)
+    ),
     Mcurrent_(nullptr),
     prepared_(false),
     motionTime_(),
@@ -75,17 +86,17 @@ void Foam::meshless::bodyModels::ghostWall::connect(particleScene& scene)
     zPlane_ = scene.zPlane();
 
     particleSet& set = body_.particles();
-    x0_ = &set.addScratchField("x0", particleField::kind::vector);
-    n0_ = &set.addScratchField("n0", particleField::kind::vector);
+    x0_ = &set.addField("x0", particleField::kind::vector);
+    n0_ = &set.addField("n0", particleField::kind::vector);
     acc_ = &set.addScratchField("acceleration", particleField::kind::vector);
     Mcurrent_ = &set.addScratchField("Mcurrent", particleField::kind::tensor);
 
-    // The cloud holds the positions at the start time (moved, on restart):
-    // back to the motion's reference frame
+    // The cloud holds the positions at the start time: back to the
+    // motion's reference frame, unless a restart read that frame
     const septernion T = transformationAt(runTime.value());
     const label dim = set.dim();
     const particleField& x = set.positions();
-    for (label i = 0; i < set.size(); ++i)
+    for (label i = 0; i < (referenceRead_ ? 0 : set.size()); ++i)
     {
         vector p(Zero), n(Zero);
         p.z() = zPlane_;
@@ -106,7 +117,8 @@ void Foam::meshless::bodyModels::ghostWall::connect(particleScene& scene)
 
     // Shape tensors computed before the motion was known (the fluid may
     // connect first) were taken in the start frame: back to the reference
-    if (prepared_)
+    // (read in it on a restart)
+    if (prepared_ && !referenceRead_)
     {
         toReferenceFrame(Mwall_, R_);
         rotateShapeTensors();
@@ -348,6 +360,12 @@ void Foam::meshless::bodyModels::ghostWall::prepare
 
     // The wall moves rigidly: its own pairs are those of the start
     const neighbourRelation& own = ownRelation(relations, W, true);
+    if (referenceRead_)
+    {
+        prepared_ = true;
+        rotateShapeTensors();
+        return;
+    }
     computeOwnShapeTensors(own, Mwall_);
     const label nCompleted =
         body_.dim() == 3

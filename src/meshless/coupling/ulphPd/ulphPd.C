@@ -63,9 +63,16 @@ Foam::meshless::couplings::ulphPd::ulphPd
     {
         particleBody& sb = solidBody(name);
         solidBodies_.append(&sb);
+        // Written when used (restart state of the solid's ghosts)
         stepAcceleration_.push_back
         (
-            &sb.particles().addScratchField
+            stepAcc
+          ? &sb.particles().addField
+            (
+                "stepAcceleration",
+                particleField::kind::vector
+            )
+          : &sb.particles().addScratchField
             (
                 "stepAcceleration",
                 particleField::kind::vector

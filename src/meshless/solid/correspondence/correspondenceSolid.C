@@ -58,12 +58,19 @@ void Foam::meshless::correspondenceSolid::connect(particleScene& scene)
 
     // The state read is the committed one (the step's start for
     // incremental laws); the accelerations of the start state for the
-    // first half kick
+    // first half kick, those of the last step on a restart that wrote them
     const scalar t = scene.time().value();
     constraints_->prescribe(t, X0_, body_.particles().positions(), U_);
     computeF(F_);
     std::copy(F_.data(), F_.data() + F_.size()*F_.nComponents(), Fold_.data());
+    const label nAcc = acc_.size()*acc_.nComponents();
+    std::vector<double> accRead
+    (
+        accRead_ ? acc_.data() : nullptr,
+        accRead_ ? acc_.data() + nAcc : nullptr
+    );
     evaluate(t, false, scene.costs());
+    std::copy(accRead.begin(), accRead.end(), acc_.data());
     accValid_ = true;
 
     Info<< "    " << body_.name() << ": " << type() << ", "

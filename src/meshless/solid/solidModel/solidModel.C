@@ -24,6 +24,7 @@ Foam::meshless::solidModel::solidModel
 :
     bodyModel(body, dict),
     restart_(body.particles().found("X0")),
+    accRead_(restart_ && body.particles().found("acceleration")),
     U_(body.particles().addField("U", particleField::kind::vector)),
     X0_(body.particles().addField("X0", particleField::kind::vector)),
     displacement_
@@ -37,7 +38,10 @@ Foam::meshless::solidModel::solidModel
     ),
     mass_(body.requireField("mass", "a solid model")),
     V0_(body.requireField("volume", "a solid model")),
-    acc_(body.particles().addScratchField("acc", particleField::kind::vector)),
+    acc_
+    (
+        body.particles().addField("acceleration", particleField::kind::vector)
+    ),
     law_(constitutiveLaw::New(dict, body.dim(), body.particles())),
     integrator_
     (
