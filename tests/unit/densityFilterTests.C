@@ -96,7 +96,6 @@ struct water
         ctx.dim = dim;
         ctx.W = W.get();
         ctx.n = n;
-        ctx.x = fx->x(0).data();
         ctx.rho = rho.data();
         ctx.mass = mass.data();
         ctx.sources = {{fx->sources(0)[0].rel, nullptr}};

@@ -85,7 +85,6 @@ struct twoSources
         ctx.dim = 2;
         ctx.W = W.get();
         ctx.n = fx.size(0);
-        ctx.x = fx.x(0).data();
         ctx.sources = fx.sources(0);
         ctx.wallSource = {false, true, false};
     }

@@ -134,6 +134,22 @@ void Foam::meshless::neighbourRelation::computeReverse()
 }
 
 
+void Foam::meshless::neighbourRelation::require
+(
+    const unsigned geometry,
+    const char* user
+) const
+{
+    if ((cached_ & geometry) != geometry)
+    {
+        FatalErrorInFunction
+            << "Relation " << name_ << " caches geometry " << cached_
+            << ": " << user << " expected it to cache " << geometry
+            << " (see neighbourRelation::geometry)" << abort(FatalError);
+    }
+}
+
+
 void Foam::meshless::neighbourRelation::build()
 {
     list_.build(cellsB_, xA_.data(), xA_.size(), inner_);

@@ -208,7 +208,6 @@ void Foam::meshless::fluidModel::setContext()
     ctx_.dim = body_.dim();
     ctx_.W = &body_.kernel();
     ctx_.n = set.size();
-    ctx_.x = set.positions().data();
     ctx_.U = U_.data();
     ctx_.rho = rho_.data();
     ctx_.mass = mass_.data();

@@ -29,6 +29,7 @@ Foam::meshless::peridynamicFamilies::peridynamicFamilies
     bonds_(bonds),
     intact_(intact)
 {
+    bonds_.require(neighbourRelation::separation, "peridynamicFamilies");
     intact_.assign(bonds_.nPairs(), 1);
 }
 
