@@ -134,20 +134,3 @@ Foam::label Foam::meshless::readLabelInRange
     }
     return v;
 }
-
-
-Foam::label Foam::meshless::readDimension
-(
-    const dictionary& dict,
-    const word& keyword
-)
-{
-    const label v = dict.get<label>(keyword);
-    if (v != 2 && v != 3)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry '" << keyword << "' is " << v
-            << ": expected 2 or 3" << exit(FatalIOError);
-    }
-    return v;
-}

@@ -372,14 +372,4 @@ void Foam::meshless::atomicTimeWriter::commit()
 }
 
 
-void Foam::meshless::atomicTimeWriter::abandon()
-{
-    if (pending())
-    {
-        rmDir(runTime_.path()/instance(), true);
-        pending_.clear();
-    }
-}
-
-
 // ************************************************************************* //

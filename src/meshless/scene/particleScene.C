@@ -262,13 +262,6 @@ void Foam::meshless::particleScene::checkState
 }
 
 
-void Foam::meshless::particleScene::write()
-{
-    writeState();
-    writeVtk();
-}
-
-
 void Foam::meshless::particleScene::writeState()
 {
     costAccounting::scope timer(costs_, writeCost_);

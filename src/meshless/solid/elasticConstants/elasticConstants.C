@@ -37,24 +37,6 @@ Foam::meshless::elasticConstants::elasticConstants(const dictionary& dict)
 }
 
 
-Foam::meshless::elasticConstants::elasticConstants
-(
-    const scalar E,
-    const scalar nu
-)
-:
-    E_(E),
-    nu_(nu)
-{
-    if (!(E > 0) || !(nu > -1 && nu < 0.5))
-    {
-        FatalErrorInFunction
-            << "E = " << E << ", nu = " << nu
-            << ": expected E > 0 and nu in (-1, 0.5)" << exit(FatalError);
-    }
-}
-
-
 Foam::scalar Foam::meshless::elasticConstants::waveSpeed(const scalar rho) const
 {
     return std::sqrt(M()/rho);
