@@ -99,12 +99,20 @@ void Foam::meshless::particleBody::select(costAccounting& costs)
 
             const List<bodyModel::modelRole> roles = effects_.last().roles();
             const bodyModel::modelRole role = model_->role();
-            if (!roles.found(role))
+            wordList models = effects_.last().models();
+            const word modelType = dict_.get<word>("model");
+            if
+            (
+                !roles.found(role)
+             || (models.size() && !models.found(modelType))
+            )
             {
-                wordList models;
-                for (const bodyModel::modelRole r : roles)
+                if (models.empty())
                 {
-                    models.append(bodyModel::modelsOf(r));
+                    for (const bodyModel::modelRole r : roles)
+                    {
+                        models.append(bodyModel::modelsOf(r));
+                    }
                 }
                 FatalIOErrorInFunction(e.dict())
                     << "Effect '" << e.keyword() << "' of body '" << name_

@@ -1,0 +1,465 @@
+/*---------------------------------------------------------------------------*\
+  meshlessFoam: meshless fluid-structure interaction inside OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "riemannWcsph.H"
+#include "particleScene.H"
+#include "effect.H"
+#include "viscosity.H"
+#include "transportVelocity.H"
+#include "dictionaryChecks.H"
+#include "addToRunTimeSelectionTable.H"
+#include <algorithm>
+#include <cmath>
+
+namespace Foam
+{
+namespace meshless
+{
+namespace bodyModels
+{
+    defineTypeNameAndDebug(riemannWcsph, 0);
+    addToRunTimeSelectionTable(bodyModel, riemannWcsph, dictionary);
+    addModelRole(riemannWcsph, fluid);
+}
+}
+}
+
+
+const Foam::Enum<Foam::meshless::bodyModels::riemannWcsph::correctionType>
+Foam::meshless::bodyModels::riemannWcsph::correctionTypeNames
+({
+    { correctionType::none, "none" },
+    { correctionType::KGC, "KGC" },
+    { correctionType::RKGC, "RKGC" },
+    { correctionType::WKGC, "WKGC" },
+});
+
+
+const Foam::Enum<Foam::meshless::riemannEquations::limiterType>
+Foam::meshless::bodyModels::riemannWcsph::limiterTypeNames
+({
+    { riemannEquations::limiterType::compression, "compression" },
+    { riemannEquations::limiterType::expansion, "expansion" },
+    { riemannEquations::limiterType::full, "full" },
+});
+
+
+const Foam::Enum<bool>
+Foam::meshless::bodyModels::riemannWcsph::wallPressureNames
+({
+    { true, "clipped" },
+    { false, "linear" },
+});
+
+
+namespace
+{
+    Foam::word densityReinitialisationWord(const Foam::dictionary& dict)
+    {
+        const Foam::word w =
+            dict.getOrDefault<Foam::word>
+            (
+                "densityReinitialisation",
+                "freeSurface"
+            );
+        if (w != "freeSurface" && w != "internal")
+        {
+            FatalIOErrorInFunction(dict)
+                << "densityReinitialisation " << w << ": expected freeSurface"
+                << " (summation, at least rho0) or internal (summation)"
+                << Foam::exit(Foam::FatalIOError);
+        }
+        return w;
+    }
+}
+
+
+Foam::meshless::bodyModels::riemannWcsph::riemannWcsph
+(
+    particleBody& body,
+    const dictionary& dict
+)
+:
+    fluidModel(body, dict),
+    c0_(readPositive(dict, "soundSpeed")),
+    acousticCourant_(readPositiveOrDefault(dict, "acousticCourant", 0.6)),
+    referenceSpeed_(readPositiveOrDefault(dict, "referenceSpeed", 0.1*c0_)),
+    correction_(correctionTypeNames.get("kernelCorrection", dict)),
+    wkgcAlpha_(0),
+    limiter_
+    (
+        limiterTypeNames.getOrDefault
+        (
+            "dissipationLimiter", dict, riemannEquations::limiterType::compression
+        )
+    ),
+    freeSurface_(densityReinitialisationWord(dict) == "freeSurface"),
+    clipWallPressure_
+    (
+        wallPressureNames.getOrDefault("wallPressure", dict, false)
+    ),
+    summationNorm_(0),
+    drho_(body.particles().addField("densityRate", particleField::kind::scalar)),
+    aDiss_
+    (
+        body.particles().addField
+        (
+            "dissipativeAcceleration", particleField::kind::vector
+        )
+    ),
+    acc_(body.particles().addField("acceleration", particleField::kind::vector)),
+    B_(body.particles().addScratchField("B", particleField::kind::tensor)),
+    aP_(body.particles().addScratchField("aPressure", particleField::kind::vector)),
+    aPrior_(body.particles().addScratchField("aPrior", particleField::kind::vector)),
+    dx_(body.particles().addScratchField("dxTransport", particleField::kind::vector)),
+    mu_(0),
+    viscosityEffect_(nullptr),
+    transport_(nullptr),
+    acoustic_(body.name(), 1, "acoustic steps per advection step"),
+    summationCost_(-1),
+    correctionCost_(-1),
+    acousticCost_(-1)
+{
+    if (correction_ == correctionType::WKGC)
+    {
+        wkgcAlpha_ = readPositive(dict, "wkgcAlpha");
+    }
+    else if (dict.found("wkgcAlpha"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "wkgcAlpha is the weight of kernelCorrection WKGC, but"
+            << " kernelCorrection is " << correctionTypeNames[correction_]
+            << ": expected no wkgcAlpha, or kernelCorrection WKGC"
+            << exit(FatalIOError);
+    }
+
+    // The geometry is that of the advection step's start: no skin
+    if (!dict.found("neighbourSkin")) skin_ = 0;
+}
+
+
+Foam::scalar Foam::meshless::bodyModels::riemannWcsph::pressureOf
+(
+    const scalar rho
+) const
+{
+    return c0_*c0_*(rho - rho0_);
+}
+
+
+Foam::scalar Foam::meshless::bodyModels::riemannWcsph::densityOf
+(
+    const scalar p
+) const
+{
+    return rho0_ + p/(c0_*c0_);
+}
+
+
+void Foam::meshless::bodyModels::riemannWcsph::connectModel(particleScene&)
+{
+    if (const auto* visc = findEffect<effects::viscosity>(body_))
+    {
+        mu_ = visc->mu();
+        viscosityEffect_ = visc;
+    }
+    transport_ = findEffect<effects::transportVelocity>(body_);
+
+    // Pair geometry: x_ij, r, W (summation) and dW/dr (everything else)
+    own_->cache(neighbourRelation::kernelGradient);
+    for (boundary& b : boundaries_)
+    {
+        b.toGhosts->cache(neighbourRelation::kernelGradient);
+    }
+
+    // Kernel sum of a full lattice at the body's spacing, self included
+    const smoothingKernel& W = body_.kernel();
+    const label dim = body_.dim();
+    const scalar dx = body_.spacing();
+    const int m = int(std::ceil(W.radius()/dx));
+    scalar sigma0 = 0;
+    for (int i = -m; i <= m; ++i)
+    {
+        for (int j = -m; j <= m; ++j)
+        {
+            for (int k = (dim == 3 ? -m : 0); k <= (dim == 3 ? m : 0); ++k)
+            {
+                sigma0 += W.W(dx*std::sqrt(scalar(i*i + j*j + k*k)));
+            }
+        }
+    }
+    summationNorm_ = 1/(sigma0*std::pow(dx, dim));
+}
+
+
+void Foam::meshless::bodyModels::riemannWcsph::setSources()
+{
+    using riemannEquations::sourceData;
+    src_.resize(1 + boundaries_.size());
+    src_[0] = sourceData
+    {
+        true, p_.data(), B_.data(), U_.data(), nullptr, nullptr, true,
+        clipWallPressure_
+    };
+    for (size_t k = 0; k < boundaries_.size(); ++k)
+    {
+        const ghostBoundary& g = *boundaries_[k].ghosts;
+        src_[k + 1] = sourceData
+        {
+            false, nullptr, nullptr, g.U(), g.accelerations(), g.normals(),
+            g.slipNormals() == nullptr, clipWallPressure_
+        };
+    }
+}
+
+
+void Foam::meshless::bodyModels::riemannWcsph::updatePressure()
+{
+    const label n = rho_.size();
+    const double* rho = rho_.data();
+    const double* m = mass_.data();
+    double* p = p_.data();
+    double* V = V_.data();
+    const double c2 = c0_*c0_;
+    const double rho0 = rho0_;
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < n; ++i)
+    {
+        V[i] = m[i]/rho[i];
+        p[i] = c2*(rho[i] - rho0);
+    }
+}
+
+
+template<int Dim>
+void Foam::meshless::bodyModels::riemannWcsph::reinitialiseDensity()
+{
+    using namespace riemannEquations;
+    const label n = rho_.size();
+    gather
+    (
+        n, ctx_.sources,
+        summationTerm<Dim>
+        {
+            src_.data(), mass_.data(), V0_.data(), aPrior_.data(),
+            body_.kernel().W(0), summationNorm_, rho0_, c0_*c0_,
+            freeSurface_, rho_.data()
+        }
+    );
+    updatePressure();
+}
+
+
+Foam::scalar Foam::meshless::bodyModels::riemannWcsph::maxDeltaT
+(
+    const scalar maxCo
+) const
+{
+    const scalar h = body_.kernel().h();
+    const label n = U_.size();
+    const label dim = body_.dim();
+    const double* U = U_.data();
+    const double* a = acc_.data();
+    double s2 = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        double u2 = 0, a2 = 0;
+        for (label d = 0; d < dim; ++d)
+        {
+            u2 += U[i*dim + d]*U[i*dim + d];
+            a2 += a[i*dim + d]*a[i*dim + d];
+        }
+        s2 = std::max(s2, std::max(u2, 4*h*std::sqrt(a2)));
+    }
+    return maxCo*h/std::max(std::sqrt(s2), referenceSpeed_);
+}
+
+
+Foam::scalar Foam::meshless::bodyModels::riemannWcsph::acousticDeltaT() const
+{
+    return acousticCourant_*body_.kernel().h()/(c0_ + U_.maxMagnitude());
+}
+
+
+template<int Dim>
+void Foam::meshless::bodyModels::riemannWcsph::advanceDim
+(
+    const scalar t,
+    const scalar dt,
+    costAccounting& costs
+)
+{
+    using namespace riemannEquations;
+
+    if (summationCost_ < 0)
+    {
+        summationCost_ = costs.part(body_.name() + ".densitySummation");
+        correctionCost_ = costs.part(body_.name() + ".kernelCorrection");
+        acousticCost_ = costs.part(body_.name() + ".acousticSteps");
+    }
+
+    particleSet& set = body_.particles();
+    const label n = set.size();
+    const label nv = n*Dim;
+    const scalar h = body_.kernel().h();
+    const double rho0c0 = rho0_*c0_;
+
+    // Advection step: the scene built the relations at t. The prior
+    // accelerations of the effects first: the walls' density in the
+    // summation takes them
+    aPrior_.fill(0);
+    body_.addEffectAccelerations(t, aPrior_, costs);
+    {
+        costAccounting::scope timer(costs, summationCost_);
+        reinitialiseDensity<Dim>();
+    }
+    {
+        costAccounting::scope timer(costs, correctionCost_);
+        gather
+        (
+            n, ctx_.sources,
+            correctionTerm<Dim>
+            {
+                correction_ == correctionType::none, wkgcAlpha_, B_.data()
+            }
+        );
+    }
+
+    if (viscosityEffect_)
+    {
+        costAccounting::scope timer(costs, body_.costPart(*viscosityEffect_));
+        gather
+        (
+            n, ctx_.sources,
+            viscousTerm<Dim>
+            {
+                src_.data(), U_.data(), rho_.data(), mu_, 0.01*h,
+                aPrior_.data()
+            }
+        );
+    }
+
+    double* x = set.positions().data();
+    if (transport_)
+    {
+        costAccounting::scope timer(costs, body_.costPart(*transport_));
+        gather
+        (
+            n, ctx_.sources,
+            transportTerm<Dim>
+            {
+                src_.data(), B_.data(), transport_->coefficient()*h*h,
+                dx_.data()
+            }
+        );
+        const double* dx = dx_.data();
+        #pragma omp parallel for schedule(static)
+        for (label k = 0; k < nv; ++k) x[k] += dx[k];
+    }
+
+    // Acoustic steps
+    const label nAc = acoustic_(dt, acousticDeltaT());
+    const scalar dts = dt/nAc;
+    Info<< "    " << body_.name() << ": " << nAc << " acoustic steps of "
+        << dts << " s" << endl;
+
+    costAccounting::scope timer(costs, acousticCost_);
+    double* U = U_.data();
+    double* rho = rho_.data();
+    double* drho = drho_.data();
+    const double* aP = aP_.data();
+    const double* aD = aDiss_.data();
+    const double* a0 = aPrior_.data();
+
+    for (label s = 0; s < nAc; ++s)
+    {
+        const scalar ts = t + s*dts;
+        moveBoundaries(ts + 0.5*dts);
+
+        // First half: density and position to the half step, pressure
+        updateDensity(rho, drho, 0.5*dts, rho);
+        updatePressure();
+        #pragma omp parallel for schedule(static)
+        for (label k = 0; k < nv; ++k) x[k] += 0.5*dts*U[k];
+
+        switch (correction_)
+        {
+            case correctionType::none:
+                gather
+                (
+                    n, ctx_.sources,
+                    pressureTerm<Dim, pairing::none>
+                    {
+                        src_.data(), p_.data(), rho, B_.data(), a0, rho0c0,
+                        aP_.data(), drho
+                    }
+                );
+                break;
+            case correctionType::KGC:
+                gather
+                (
+                    n, ctx_.sources,
+                    pressureTerm<Dim, pairing::kgc>
+                    {
+                        src_.data(), p_.data(), rho, B_.data(), a0, rho0c0,
+                        aP_.data(), drho
+                    }
+                );
+                break;
+            default:
+                gather
+                (
+                    n, ctx_.sources,
+                    pressureTerm<Dim, pairing::rkgc>
+                    {
+                        src_.data(), p_.data(), rho, B_.data(), a0, rho0c0,
+                        aP_.data(), drho
+                    }
+                );
+                break;
+        }
+        #pragma omp parallel for schedule(static)
+        for (label k = 0; k < nv; ++k) U[k] += dts*(aP[k] + aD[k] + a0[k]);
+
+        // Second half: position to the full step, continuity, dissipation
+        #pragma omp parallel for schedule(static)
+        for (label k = 0; k < nv; ++k) x[k] += 0.5*dts*U[k];
+        gather
+        (
+            n, ctx_.sources,
+            dissipationTerm<Dim>
+            {
+                src_.data(), U, rho, rho0c0, c0_, limiter_, aDiss_.data(),
+                drho
+            }
+        );
+        updateDensity(rho, drho, 0.5*dts, rho);
+    }
+
+    // The accelerations the next advection step is taken from
+    double* acc = acc_.data();
+    #pragma omp parallel for schedule(static)
+    for (label k = 0; k < nv; ++k) acc[k] = a0[k] + aD[k];
+
+    updatePressure();
+    moveBoundaries(t + dt);
+}
+
+
+void Foam::meshless::bodyModels::riemannWcsph::advance
+(
+    const scalar t,
+    const scalar dt,
+    costAccounting& costs
+)
+{
+    emptied_ = -1;
+    moveBoundaries(t);
+    setSources();
+    if (body_.dim() == 2) advanceDim<2>(t, dt, costs);
+    else advanceDim<3>(t, dt, costs);
+}
+
+
+// ************************************************************************* //
