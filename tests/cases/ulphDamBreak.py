@@ -7,12 +7,13 @@ without a blow-up; no particle goes more than half a
 spacing into a wall at any written time (without the wall repulsion one sank
 through the floor and left the tank at t = 0.73 s); the total energy never
 grows by more than 0.5 % of the column's potential energy; the front
-stays within 0.3 H RMS of the Navier-Stokes front without surface tension
-(interFoam, as the ULPH solver; benchmarks/damBreakVof) at this
-resolution (0.225 H; 0.131 H at the paper's 1 mm) and within 0.15 H of
-Martin & Moyce (1952) (0.093 H; the Navier-Stokes fronts themselves miss
-the experiment by 0.22 to 0.31 H, see the tutorial's README); the front
-is at 3H when the experiment's is; the water carries no tension
+stays within the tutorial's guard of the Navier-Stokes front without
+surface tension (interFoam, as the ULPH solver; benchmarks/damBreakVof),
+0.225 + 0.005 H RMS at this spacing (the stored run: 0.2252 H), and
+validate.py --check ends with its PASS line (Martin & Moyce (1952) is
+reported, not checked: the Navier-Stokes front itself misses it by 0.22
+to 0.31 H, see the tutorial's README); the solver's progress is shown, a
+line per 0.05 s to 0.6 s; the water carries no tension
 (minPressure 0: without it the tongue's tension threw particles out at
 this spacing in four of six runs that differed only in maxCo or the write
 interval, with alpha 0.05); the clouds read
@@ -79,25 +80,29 @@ def check_binary_reader(t, case, clouds):
 def dam_break(t, work):
     case, code, out = run_tutorial(t, TUTORIAL, work, "damBreak",
                                    ("-dx", "0.002"))
-    m = re.search(r"RMS error ([0-9.]+) H .*deepest penetration "
-                  r"([0-9.]+) dx, energy rise ([0-9.]+) %", out)
+    m = re.search(r"dam break front: RMS ([0-9.]+) H from the Navier-Stokes "
+                  r"reference \(guard ([^:]*): (met|MISSED)\).*? RMS "
+                  r"([0-9.]+) H from Martin & Moyce \(reported\); deepest "
+                  r"penetration ([0-9.]+) dx, energy rise ([0-9.]+) %", out)
     t.check("validation ran", m is not None, out[-1500:])
     if m:
-        rms, depth = float(m.group(1)), float(m.group(2))
-        rise = float(m.group(3))
-        t.check("front RMS error against the experiment %.4f H < "
-                "0.15 H" % rms, rms < 0.15)
+        rms, depth = float(m.group(1)), float(m.group(5))
+        rise = float(m.group(6))
+        t.check("front RMS difference from the Navier-Stokes front %.4f H "
+                "<= its guard %s = 0.230 H" % (rms, m.group(2)),
+                rms <= 0.230 and m.group(3) == "met")
         t.check("no particle in a wall at any written time (%.2f dx <"
                 " 0.5 dx)" % depth, depth < 0.5)
         t.check("total energy rise %.3f %% < 0.5 %%" % rise, rise < 0.5)
-    m = re.search(r"Navier-Stokes front of interFoam without surface "
-                  r"tension .*? RMS ([0-9.]+) H \(largest x\)", out)
-    t.check("front RMS difference from the Navier-Stokes front %s < "
-            "0.3 H" % (m.group(1) + " H" if m else "(not reported)"),
-            m is not None and float(m.group(1)) < 0.3, out[-1500:])
-    rows = re.findall(r"\| 1\.929 \| 3\.001 \| ([0-9.]+) \|", out)
-    t.check("front at x = 3H by T = 1.93 (%s)" % rows,
-            bool(rows) and abs(float(rows[0]) - 3.0) < 0.3)
+    t.check("validate.py ends with its PASS line",
+            re.search(r"^PASS: dam break front within [0-9.]+ H RMS of the "
+                      r"Navier-Stokes reference", out, re.M) is not None
+            and "FAIL:" not in out, out[-1500:])
+    marks = re.findall(r"^  t = ([0-9.]+) s of 0\.6 s \(.*\), ~[0-9]+ s "
+                       r"left$", out, re.M)
+    t.check("progress: a line per 0.05 s to 0.6 s (%s)" % ", ".join(marks),
+            [round(float(x), 6) for x in marks]
+            == [round(0.05 * k, 6) for k in range(1, 13)])
     clouds = read_clouds(case, 0.6, per_particle=True)
     check_binary_reader(t, case, clouds)
     t.check_equal("reader sees water and walls", sorted(clouds),
