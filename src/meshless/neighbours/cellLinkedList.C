@@ -10,7 +10,8 @@
 Foam::meshless::cellLinkedList::cellLinkedList
 (
     const label dim,
-    const scalar radius
+    const scalar radius,
+    const periodicBox& periodic
 )
 :
     dim_(dim),
@@ -20,6 +21,10 @@ Foam::meshless::cellLinkedList::cellLinkedList
     origin_{0, 0, 0},
     nCells_{1, 1, 1},
     nParticles_(0),
+    periodic_(periodic),
+    cellSizeDir_{cellSize_, cellSize_, cellSize_},
+    invCellSizeDir_{invCellSize_, invCellSize_, invCellSize_},
+    visitAll_{false, false, false},
     x_(nullptr)
 {
     if (dim != 2 && dim != 3)
@@ -32,6 +37,26 @@ Foam::meshless::cellLinkedList::cellLinkedList
         FatalErrorInFunction
             << "Search radius " << radius << ": expected > 0"
             << exit(FatalError);
+    }
+    for (label d = dim; d < 3; ++d)
+    {
+        if (periodic.periodic(d))
+        {
+            FatalErrorInFunction
+                << "Periodic direction " << d << " in " << dim << "D"
+                << exit(FatalError);
+        }
+    }
+    for (label d = 0; d < dim; ++d)
+    {
+        if (periodic.periodic(d) && !(periodic.length(d) > 2*radius))
+        {
+            FatalErrorInFunction
+                << "Period " << periodic.length(d) << " in direction " << d
+                << ": expected more than twice the search radius " << radius
+                << " (a point would see two images of a neighbour)"
+                << exit(FatalError);
+        }
     }
 }
 
@@ -67,7 +92,9 @@ void Foam::meshless::cellLinkedList::build(const double* x, const label n)
         hi[d] = h;
     }
 
-    // Cell size: the radius, coarsened while the grid would be too large
+    // Cell size: the radius, coarsened while the grid would be too large.
+    // Along a periodic direction the grid is the period, in a whole number
+    // of cells at least that wide.
     cellSize_ = radius_*(1 + 1e-10);
     const double maxCells = double(maxCellsPerParticle)*std::max<label>(n, 1) + 64;
     for (;;)
@@ -75,7 +102,10 @@ void Foam::meshless::cellLinkedList::build(const double* x, const label n)
         double total = 1;
         for (label d = 0; d < dim; ++d)
         {
-            total *= std::floor((hi[d] - lo[d])/cellSize_) + 1;
+            total *=
+                periodic_.periodic(d)
+              ? std::max(std::floor(periodic_.length(d)/cellSize_), 1.0)
+              : std::floor((hi[d] - lo[d])/cellSize_) + 1;
         }
         if (total <= maxCells) break;
         cellSize_ *= 1.5;
@@ -85,9 +115,24 @@ void Foam::meshless::cellLinkedList::build(const double* x, const label n)
     label total = 1;
     for (label d = 0; d < 3; ++d)
     {
-        origin_[d] = lo[d];
-        nCells_[d] =
-            d < dim ? label(std::floor((hi[d] - lo[d])*invCellSize_)) + 1 : 1;
+        if (d < dim && periodic_.periodic(d))
+        {
+            const double L = periodic_.length(d);
+            origin_[d] = periodic_.min(d);
+            nCells_[d] = std::max(label(std::floor(L/cellSize_)), label(1));
+            cellSizeDir_[d] = L/nCells_[d];
+            invCellSizeDir_[d] = nCells_[d]/L;
+            visitAll_[d] = nCells_[d] < 3;
+        }
+        else
+        {
+            origin_[d] = lo[d];
+            nCells_[d] =
+                d < dim ? label(std::floor((hi[d] - lo[d])*invCellSize_)) + 1 : 1;
+            cellSizeDir_[d] = cellSize_;
+            invCellSizeDir_[d] = invCellSize_;
+            visitAll_[d] = false;
+        }
         total *= nCells_[d];
     }
 
@@ -99,17 +144,42 @@ void Foam::meshless::cellLinkedList::build(const double* x, const label n)
     const label nx = nCells_[0];
     const label ny = nCells_[1];
 
-    #pragma omp parallel for schedule(static)
-    for (label i = 0; i < n; ++i)
+    if (periodic_.any())
     {
-        const double* p = x + size_t(i)*dim;
-        label c[3] = {0, 0, 0};
-        for (label d = 0; d < dim; ++d)
+        #pragma omp parallel for schedule(static)
+        for (label i = 0; i < n; ++i)
         {
-            c[d] = label((p[d] - origin_[d])*invCellSize_);
-            if (c[d] >= nCells_[d]) c[d] = nCells_[d] - 1;
+            const double* p = x + size_t(i)*dim;
+            label c[3] = {0, 0, 0};
+            for (label d = 0; d < dim; ++d)
+            {
+                if (periodic_.periodic(d))
+                {
+                    c[d] = periodicCell(d, p[d]);
+                }
+                else
+                {
+                    c[d] = label((p[d] - origin_[d])*invCellSize_);
+                    if (c[d] >= nCells_[d]) c[d] = nCells_[d] - 1;
+                }
+            }
+            cellOf_[i] = c[0] + nx*(c[1] + ny*c[2]);
         }
-        cellOf_[i] = c[0] + nx*(c[1] + ny*c[2]);
+    }
+    else
+    {
+        #pragma omp parallel for schedule(static)
+        for (label i = 0; i < n; ++i)
+        {
+            const double* p = x + size_t(i)*dim;
+            label c[3] = {0, 0, 0};
+            for (label d = 0; d < dim; ++d)
+            {
+                c[d] = label((p[d] - origin_[d])*invCellSize_);
+                if (c[d] >= nCells_[d]) c[d] = nCells_[d] - 1;
+            }
+            cellOf_[i] = c[0] + nx*(c[1] + ny*c[2]);
+        }
     }
 
     // Counting sort, serial and stable: deterministic order within a cell

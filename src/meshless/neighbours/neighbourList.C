@@ -9,7 +9,7 @@
 #include <omp.h>
 #endif
 
-template<int Dim>
+template<int Dim, bool Periodic>
 void Foam::meshless::neighbourList::queryChunk
 (
     const cellLinkedList& cellsB,
@@ -24,6 +24,7 @@ void Foam::meshless::neighbourList::queryChunk
     const double r2max = cellsB.radius()*cellsB.radius();
     const label* sorted = cellsB.sortedData();
     const double* xB = cellsB.points();
+    const periodicBox& box = cellsB.periodic();
 
     for (label i = i0; i < i1; ++i)
     {
@@ -31,7 +32,7 @@ void Foam::meshless::neighbourList::queryChunk
         const label skip = excludeSelf ? i : -1;
         const size_t before = used;
 
-        cellsB.forEachRow(p, [&](const label k0, const label k1)
+        auto row = [&](const label k0, const label k1)
         {
             // Room for every candidate, then a branch-free compaction: the
             // accept test is ~40 % true, a branch there mispredicts a lot
@@ -43,12 +44,29 @@ void Foam::meshless::neighbourList::queryChunk
             for (label k = k0; k < k1; ++k)
             {
                 const label j = sorted[k];
-                const double r2 = distanceSqr<Dim>(p, xB + size_t(j)*Dim);
+                double r2;
+                if (Periodic)
+                {
+                    // Minimum image: the query visits the cells across
+                    // the period, the pair's distance is that of its
+                    // nearest image
+                    const double* q = xB + size_t(j)*Dim;
+                    double dx[Dim];
+                    for (int d = 0; d < Dim; ++d) dx[d] = q[d] - p[d];
+                    box.minimumImage<Dim>(dx);
+                    r2 = 0;
+                    for (int d = 0; d < Dim; ++d) r2 += dx[d]*dx[d];
+                }
+                else
+                {
+                    r2 = distanceSqr<Dim>(p, xB + size_t(j)*Dim);
+                }
                 *out = j;
                 out += (r2 <= r2max) & (j != skip);
             }
             used = out - buf.data();
-        });
+        };
+        cellsB.forEachRowImpl<Dim, Periodic>(p, row);
 
         // Row length for now; turned into offsets by build
         offset_[i + 1] = label(used - before);
@@ -107,13 +125,24 @@ void Foam::meshless::neighbourList::build
         std::vector<label>& buf = threadIndex_[t];
         size_t used = 0;
 
-        if (dim == 2)
+        if (cellsB.periodic().any())
         {
-            queryChunk<2>(cellsB, xA, i0, i1, excludeSelf, buf, used);
+            if (dim == 2)
+            {
+                queryChunk<2, true>(cellsB, xA, i0, i1, excludeSelf, buf, used);
+            }
+            else
+            {
+                queryChunk<3, true>(cellsB, xA, i0, i1, excludeSelf, buf, used);
+            }
+        }
+        else if (dim == 2)
+        {
+            queryChunk<2, false>(cellsB, xA, i0, i1, excludeSelf, buf, used);
         }
         else
         {
-            queryChunk<3>(cellsB, xA, i0, i1, excludeSelf, buf, used);
+            queryChunk<3, false>(cellsB, xA, i0, i1, excludeSelf, buf, used);
         }
         threadStart_[t + 1] = label(used);
 

@@ -58,7 +58,7 @@ void Foam::meshless::neighbourRelation::cache(const unsigned geometry)
 }
 
 
-template<int Dim>
+template<int Dim, bool Periodic>
 void Foam::meshless::neighbourRelation::geometryImpl()
 {
     const label n = list_.size();
@@ -68,6 +68,7 @@ void Foam::meshless::neighbourRelation::geometryImpl()
     const label* off = list_.offsetData();
     const label* idx = list_.indexData();
     const smoothingKernel& W = W_;
+    const periodicBox& box = cellsB_.periodic();
 
     const bool sep = cached_ & separation;
     const bool val = cached_ & kernelValue;
@@ -89,10 +90,21 @@ void Foam::meshless::neighbourRelation::geometryImpl()
             const double* yj = y + size_t(idx[q])*Dim;
             double s = 0;
             double dq[Dim];
-            for (int c = 0; c < Dim; ++c)
+            if (Periodic)
             {
-                dq[c] = yj[c] - xi[c];
-                s += dq[c]*dq[c];
+                // Minimum image, also for points moved slightly out of the
+                // box since the build
+                for (int c = 0; c < Dim; ++c) dq[c] = yj[c] - xi[c];
+                box.minimumImage<Dim>(dq);
+                for (int c = 0; c < Dim; ++c) s += dq[c]*dq[c];
+            }
+            else
+            {
+                for (int c = 0; c < Dim; ++c)
+                {
+                    dq[c] = yj[c] - xi[c];
+                    s += dq[c]*dq[c];
+                }
             }
             const double rq = std::sqrt(s);
             if (sep)
@@ -170,8 +182,13 @@ void Foam::meshless::neighbourRelation::update(const label stamp)
 void Foam::meshless::neighbourRelation::updateGeometry()
 {
     if (!(cached_ & (separation | kernelValue | kernelGradient))) return;
-    if (dim() == 2) geometryImpl<2>();
-    else geometryImpl<3>();
+    if (cellsB_.periodic().any())
+    {
+        if (dim() == 2) geometryImpl<2, true>();
+        else geometryImpl<3, true>();
+    }
+    else if (dim() == 2) geometryImpl<2, false>();
+    else geometryImpl<3, false>();
 }
 
 

@@ -16,8 +16,28 @@ Foam::meshless::sceneRelations::smoothingRuleNames
 
 Foam::meshless::sceneRelations::sceneRelations()
 :
+    periodic_(),
+    periodicDict_(nullptr),
     stamp_(0)
 {}
+
+
+void Foam::meshless::sceneRelations::setPeriodic
+(
+    const periodicBox& box,
+    const dictionary* dict
+)
+{
+    if (!relations_.empty() || !cells_.empty())
+    {
+        FatalErrorInFunction
+            << "Periodic directions set after " << relations_.size()
+            << " relations were asked for: expected them first"
+            << exit(FatalError);
+    }
+    periodic_ = box;
+    periodicDict_ = dict;
+}
 
 
 Foam::meshless::sceneRelations::cells&
@@ -43,7 +63,7 @@ Foam::meshless::sceneRelations::cellsOf
             &points, radius, moving, -1,
             std::unique_ptr<cellLinkedList>
             (
-                new cellLinkedList(points.nComponents(), radius)
+                new cellLinkedList(points.nComponents(), radius, periodic_)
             )
         }
     );
@@ -73,6 +93,31 @@ Foam::meshless::neighbourRelation& Foam::meshless::sceneRelations::find
 )
 {
     const scalar radius = W.radius()*(1 + skin);
+    static const char* const dirNames[3] = {"x", "y", "z"};
+    for (label d = 0; d < xA.nComponents(); ++d)
+    {
+        if (!periodic_.periodic(d) || periodic_.length(d) > 2*radius)
+        {
+            continue;
+        }
+        const std::string why
+        (
+            "Relation '" + std::string(name) + "': periodic direction "
+          + std::string(dirNames[d]) + " has period "
+          + std::to_string(periodic_.length(d))
+          + ", expected more than twice its search radius "
+          + std::to_string(radius)
+          + " (kernel support, grown by the model's skin): a particle would"
+            " see two images of a neighbour. Lengthen the period or refine"
+            " the body."
+        );
+        if (periodicDict_)
+        {
+            FatalIOErrorInFunction(*periodicDict_)
+                << why.c_str() << exit(FatalIOError);
+        }
+        FatalErrorInFunction << why.c_str() << exit(FatalError);
+    }
     for (auto& r : relations_)
     {
         if

@@ -68,10 +68,13 @@ Foam::meshless::particleScene::particleScene(const polyMesh& mesh)
         );
         maxSpacing = max(maxSpacing, bodies_.last().spacing());
     }
+    // Periodic directions: every relation is asked for after this
+    readPeriodic();
     for (particleBody& b : bodies_)
     {
         b.select(costs_);
     }
+    startPeriodic();
     for (particleBody& b : bodies_)
     {
         b.model().connect(*this);
@@ -115,6 +118,143 @@ Foam::meshless::particleScene::particleScene(const polyMesh& mesh)
                 << " max above them" << exit(FatalIOError);
         }
         domain_ = given;
+    }
+}
+
+
+void Foam::meshless::particleScene::readPeriodic()
+{
+    const dictionary* pd = dict_.findDict("periodic");
+    if (!pd)
+    {
+        if (dict_.found("periodic"))
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Entry 'periodic': expected a dictionary of directions,"
+                << " e.g. periodic { x (0 1); }" << exit(FatalIOError);
+        }
+        return;
+    }
+
+    const wordList names(dim_ == 2 ? wordList{"x", "y"} : wordList{"x", "y", "z"});
+    periodicBox box;
+    for (const entry& e : *pd)
+    {
+        const word& key = e.keyword();
+        const label d = names.find(key);
+        if (d < 0)
+        {
+            FatalIOErrorInFunction(*pd)
+                << "Unknown periodic direction '" << key << "' in 'periodic'"
+                << " (" << dim_ << "D scene): expected one of " << names
+                << exit(FatalIOError);
+        }
+        scalarList bounds;
+        if (e.isStream())
+        {
+            ITstream& is = e.stream();
+            is >> bounds;
+        }
+        if (bounds.size() != 2)
+        {
+            FatalIOErrorInFunction(*pd)
+                << "Periodic direction '" << key << "': expected its bounds"
+                << " (min max) in m, e.g. " << key << " (0 1);"
+                << exit(FatalIOError);
+        }
+        if (!(bounds[1] > bounds[0]))
+        {
+            FatalIOErrorInFunction(*pd)
+                << "Periodic direction '" << key << "' (" << bounds[0] << " "
+                << bounds[1] << "): expected max > min" << exit(FatalIOError);
+        }
+        box.set(d, bounds[0], bounds[1]);
+    }
+
+    // A particle must not see two images of the same neighbour
+    for (const particleBody& b : bodies_)
+    {
+        if (!b.hasKernel()) continue;
+        const scalar support = b.kernel().radius();
+        for (label d = 0; d < dim_; ++d)
+        {
+            if (box.periodic(d) && !(box.length(d) > 2*support))
+            {
+                FatalIOErrorInFunction(*pd)
+                    << "Periodic direction '" << names[d] << "': period "
+                    << box.length(d) << " m, expected more than two kernel"
+                    << " supports of body " << b.name() << " (2 x "
+                    << support << " m): a particle would see two images of"
+                    << " the same neighbour" << exit(FatalIOError);
+            }
+        }
+    }
+
+    relations_.setPeriodic(box, pd);
+}
+
+
+void Foam::meshless::particleScene::startPeriodic()
+{
+    const periodicBox& box = relations_.periodic();
+    if (!box.any()) return;
+
+    const dictionary& pd = dict_.subDict("periodic");
+    static const char* const names[3] = {"x", "y", "z"};
+    for (particleBody& b : bodies_)
+    {
+        particleField& x = b.particles().positions();
+        if (wrapsPeriodic(b))
+        {
+            box.wrap(x.data(), x.size(), dim_);
+            continue;
+        }
+        // A body that is not wrapped must lie in the period: a particle
+        // beyond it would be a second image of another
+        for (label d = 0; d < dim_; ++d)
+        {
+            if (!box.periodic(d)) continue;
+            for (label i = 0; i < x.size(); ++i)
+            {
+                if (x(i, d) < box.min(d) || x(i, d) >= box.max(d))
+                {
+                    FatalIOErrorInFunction(pd)
+                        << "Body " << b.name() << " (model "
+                        << b.dict().get<word>("model") << ", not wrapped):"
+                        << " particle id " << b.particles().ids()[i]
+                        << " at " << names[d] << " = " << x(i, d)
+                        << " is outside the period [" << box.min(d) << ", "
+                        << box.max(d) << ") of direction " << names[d]
+                        << ": expected every particle of a fixed body or"
+                        << " solid within the period (seed it there)"
+                        << exit(FatalIOError);
+                }
+            }
+        }
+    }
+}
+
+
+bool Foam::meshless::particleScene::wrapsPeriodic(particleBody& b)
+{
+    // A solid's scheme takes x_j - x_i of its own particles from their
+    // positions: it is not split across the period (its contacts still
+    // see it through the minimum image)
+    return
+        b.model().moves()
+     && b.model().role() != bodyModel::modelRole::solid;
+}
+
+
+void Foam::meshless::particleScene::wrapPeriodic()
+{
+    const periodicBox& box = relations_.periodic();
+    if (!box.any()) return;
+    for (particleBody& b : bodies_)
+    {
+        if (!wrapsPeriodic(b)) continue;
+        particleField& x = b.particles().positions();
+        box.wrap(x.data(), x.size(), dim_);
     }
 }
 
@@ -177,6 +317,7 @@ void Foam::meshless::particleScene::advance(const scalar t, const scalar dt)
     }
     {
         costAccounting::scope timer(costs_, relationsCost_);
+        wrapPeriodic();
         relations_.update();
     }
     for (particleBody& b : bodies_)
@@ -327,6 +468,19 @@ void Foam::meshless::particleScene::describe(Ostream& os) const
         b.describe(os);
     }
     if (coupling_.valid()) coupling_->describe(os);
+    const periodicBox& box = relations_.periodic();
+    if (box.any())
+    {
+        static const char* const names[3] = {"x", "y", "z"};
+        os  << "    periodic:";
+        for (label d = 0; d < dim_; ++d)
+        {
+            if (!box.periodic(d)) continue;
+            os  << ' ' << names[d] << " [" << box.min(d) << ", "
+                << box.max(d) << ')';
+        }
+        os  << nl;
+    }
     if (vtp_) os << "    output: lagrangian clouds and VTK .vtp" << nl;
     os  << endl;
     os.precision(oldPrecision);
@@ -354,11 +508,10 @@ void Foam::meshless::particleScene::runCost(dictionary& d) const
         if (b.hasKernel()) e.add("smoothingLength", b.kernel().h());
         bodies.add(b.name(), e);
 
-        const solidModel* s =
-            const_cast<particleBody&>(b).model().solid();
-        if (s && s->subSteps().most() > 0)
+        const subStepping* s = b.model().stepCounter();
+        if (s && s->most() > 0)
         {
-            subSteps.add(b.name(), steps(s->subSteps()));
+            subSteps.add(b.name(), steps(*s));
         }
     }
     if (coupling_.valid() && coupling_->subSteps())
