@@ -20,7 +20,8 @@ case:
 Cases: particleFoam (freeFall), ulphPdFoam fluid only with fixed walls
 (damBreak) and moving walls (sloshingTank), ulphPd couplings with a
 damped plate (ulphPdHydrostatic), an elastic gate (with the solid's step
-acceleration in its ghosts, too) and breaking bonds (obstacleFracture), nosbPd alone (cantileverBeam, damped), isphTlsphFoam
+acceleration in its ghosts, too) and breaking bonds (obstacleFracture), nosbPd alone (cantileverBeam, damped), riemannSphFoam's
+Riemann fluid with its acoustic steps (riemannDamBreak), isphTlsphFoam
 TLSPH with the Verlet (oscillatingPlate) and RK4 integrators (clampedBeam,
 damped).
 """
@@ -73,6 +74,9 @@ CASES = {
     "oscillatingPlate": ("tutorials/isphTlsphFoam/oscillatingPlate",
                          ("runParameters", "dx 0.002;"), 0.01, 0.005,
                          "isphTlsphFoam", [(CD, "writeFormat", "binary")]),
+    "riemannDamBreak": ("tutorials/riemannSphFoam/damBreak",
+                        ("resolution", "dx 0.004;"), 0.04, 0.02,
+                        "riemannSphFoam", []),
     "clampedBeam": ("tutorials/isphTlsphFoam/clampedBeam",
                     ("runParameters", "dx 0.004;"), 0.0004, 0.0002,
                     "isphTlsphFoam", []),

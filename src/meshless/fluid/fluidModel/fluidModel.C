@@ -7,6 +7,7 @@
 #include "effect.H"
 #include "gravity.H"
 #include "dictionaryChecks.H"
+#include "particleExpression.H"
 #include "StringStream.H"
 #include <algorithm>
 #include <cmath>
@@ -54,6 +55,17 @@ Foam::meshless::fluidModel::fluidModel
     bool anyRho = false;
     for (label i = 0; i < rho_.size(); ++i) anyRho = anyRho || rho_(i, 0) != 0;
     if (!anyRho) rho_.fill(rho0_);
+
+    // A fresh cloud's velocity field (a restart reads its own)
+    if (freshStart_ && dict.found("initialVelocity"))
+    {
+        particleExpression::evaluate
+        (
+            dict.subDict("initialVelocity"),
+            body.particles().positions(),
+            U_
+        );
+    }
 }
 
 

@@ -276,6 +276,21 @@ Foam::scalar Foam::meshless::bodyModels::riemannWcsph::maxDeltaT
 }
 
 
+Foam::scalar Foam::meshless::bodyModels::riemannWcsph::strainEnergy() const
+{
+    const label n = rho_.size();
+    const double* rho = rho_.data();
+    const double* m = mass_.data();
+    double e = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        const double r = rho[i]/rho0_;
+        e += m[i]*(std::log(r) + 1/r - 1);
+    }
+    return c0_*c0_*e;
+}
+
+
 Foam::scalar Foam::meshless::bodyModels::riemannWcsph::acousticDeltaT() const
 {
     return acousticCourant_*body_.kernel().h()/(c0_ + U_.maxMagnitude());
