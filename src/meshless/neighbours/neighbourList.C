@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "neighbourList.H"
+#include "dispatchDim.H"
 #include <algorithm>
 
 #ifdef _OPENMP
@@ -107,14 +108,10 @@ void Foam::meshless::neighbourList::build
         std::vector<label>& buf = threadIndex_[t];
         size_t used = 0;
 
-        if (dim == 2)
+        dispatchDim(dim, [&](auto d)
         {
-            queryChunk<2>(cellsB, xA, i0, i1, excludeSelf, buf, used);
-        }
-        else
-        {
-            queryChunk<3>(cellsB, xA, i0, i1, excludeSelf, buf, used);
-        }
+            queryChunk<d>(cellsB, xA, i0, i1, excludeSelf, buf, used);
+        });
         threadStart_[t + 1] = label(used);
 
         #pragma omp barrier

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "neighbourRelation.H"
+#include "dispatchDim.H"
 #include "error.H"
 #include <cmath>
 
@@ -170,8 +171,7 @@ void Foam::meshless::neighbourRelation::update(const label stamp)
 void Foam::meshless::neighbourRelation::updateGeometry()
 {
     if (!(cached_ & (separation | kernelValue | kernelGradient))) return;
-    if (dim() == 2) geometryImpl<2>();
-    else geometryImpl<3>();
+    dispatchDim(dim(), [&](auto d) { geometryImpl<d>(); });
 }
 
 

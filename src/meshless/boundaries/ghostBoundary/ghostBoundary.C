@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "ghostBoundary.H"
+#include "dispatchDim.H"
 #include "correctionMatrix.H"
 #include <algorithm>
 
@@ -120,20 +121,13 @@ void Foam::meshless::ghostBoundary::computeOwnShapeTensors
     particleField& M
 ) const
 {
-    if (ghostBody_.dim() == 2)
+    dispatchDim(ghostBody_.dim(), [&](auto d)
     {
-        correctionMatrix::moments<2>
+        correctionMatrix::moments<d>
         (
             own, V0_.data(), correctionMatrix::kernelWeight(), M.data()
         );
-    }
-    else
-    {
-        correctionMatrix::moments<3>
-        (
-            own, V0_.data(), correctionMatrix::kernelWeight(), M.data()
-        );
-    }
+    });
 }
 
 
@@ -275,14 +269,10 @@ void Foam::meshless::ghostBoundary::interpolate
     const scalar rho0
 )
 {
-    if (ghostBody_.dim() == 2)
+    dispatchDim(ghostBody_.dim(), [&](auto d)
     {
-        interpolateImpl<2>(ghostToFluid, pF, rhoF, UF, VF, g, c0, rho0);
-    }
-    else
-    {
-        interpolateImpl<3>(ghostToFluid, pF, rhoF, UF, VF, g, c0, rho0);
-    }
+        interpolateImpl<d>(ghostToFluid, pF, rhoF, UF, VF, g, c0, rho0);
+    });
 }
 
 
