@@ -7,9 +7,7 @@
 #include "dictionaryChecks.H"
 #include "OSspecific.H"
 #include "IFstream.H"
-#include "IOdictionary.H"
 #include "atomicTimeWriter.H"
-#include <limits>
 
 namespace Foam
 {
@@ -171,34 +169,11 @@ void Foam::meshless::monitor::writeStates
         return;
     }
 
-    auto object = [&](const word& inst)
-    {
-        return IOobject
-        (
-            stateName,
-            inst,
-            "uniform",
-            runTime,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        );
-    };
-    const IOobject io(object(instance));
-    mkDir(io.path());
-    OFstream os(io.objectPath(), IOstream::ASCII);
-    os.precision(std::numeric_limits<scalar>::max_digits10);
-    object(atomicTimeWriter::timeOf(instance))
-        .writeHeader(os, IOdictionary::typeName);
-    os  << "// The monitors' state a restart needs to continue their series"
-        << nl << nl;
-    states.write(os, false);
-    IOobject::writeEndDivider(os);
-    if (!os.good())
-    {
-        FatalErrorInFunction
-            << "Failed writing " << os.name() << exit(FatalError);
-    }
+    atomicTimeWriter::writeUniform
+    (
+        runTime, instance, stateName, states,
+        "// The monitors' state a restart needs to continue their series"
+    );
 }
 
 
