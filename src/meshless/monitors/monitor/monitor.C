@@ -49,21 +49,10 @@ Foam::autoPtr<Foam::meshless::monitor> Foam::meshless::monitor::New
 )
 {
     const word monitorType(dict.get<word>("type"));
-
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(monitorType);
-
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "monitor",
-            monitorType,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
-    }
-
-    return cstrIter()(name, dict, scene);
+    return selectConstructor
+    (
+        dict, "monitor", monitorType, *dictionaryConstructorTablePtr_
+    )(name, dict, scene);
 }
 
 
