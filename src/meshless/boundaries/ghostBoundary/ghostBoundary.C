@@ -66,13 +66,6 @@ Foam::meshless::ghostBoundary::ghostBoundary
             prefixed(prefix, "Uvisc"), particleField::kind::vector
         )
     ),
-    Minv_
-    (
-        body.particles().addScratchField
-        (
-            prefixed(prefix, "Minv"), particleField::kind::tensor
-        )
-    ),
     S_
     (
         body.particles().addScratchField
@@ -162,7 +155,6 @@ struct interpolationTerm
     double* m;
     double* Uv;
     double* S;
-    double* Minv;
 
     sum start(const Foam::label s) const
     {
@@ -194,7 +186,6 @@ struct interpolationTerm
         using namespace Foam::meshless;
         tensorD<Dim> inv;
         correctionMatrix::robustInverse<Dim>(a.M, inv);
-        tens<Dim>(Minv, s) = inv;
 
         // Eq. 52: gravity less the boundary's own acceleration
         vectorD<Dim> gEff = g;
@@ -251,7 +242,7 @@ void Foam::meshless::ghostBoundary::interpolateImpl
             pF, rhoF, UF, ownShapeTensors(), gD, c0, rho0, minPressure_,
             slip_ == slipType::noSlip, accelerations(), Uown_.data(),
             normals(), V0_.data(), p_.data(), rho_.data(), mass_.data(),
-            Uvisc_.data(), S_.data(), Minv_.data()
+            Uvisc_.data(), S_.data()
         }
     );
 }
