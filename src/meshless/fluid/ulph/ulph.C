@@ -63,10 +63,6 @@ Foam::meshless::bodyModels::ulph::ulph
 }
 
 
-Foam::meshless::bodyModels::ulph::~ulph()
-{}
-
-
 Foam::scalar Foam::meshless::bodyModels::ulph::pressureOf
 (
     const scalar rho

@@ -70,10 +70,6 @@ Foam::meshless::bodyModels::nosbPd::nosbPd
 }
 
 
-Foam::meshless::bodyModels::nosbPd::~nosbPd()
-{}
-
-
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::meshless::bodyModels::nosbPd::readFailure()
