@@ -36,7 +36,6 @@ Foam::meshless::monitor::monitor
         dict.found("interval") ? readPositiveLabel(dict, "interval") : 1
     ),
     lastTime_(-GREAT),
-    dict_(dict),
     scene_(scene)
 {}
 
