@@ -109,6 +109,47 @@ Foam::word Foam::meshless::atomicTimeWriter::timeOf(const word& instance)
 }
 
 
+void Foam::meshless::atomicTimeWriter::writeUniform
+(
+    const Time& runTime,
+    const word& instance,
+    const word& name,
+    const dictionary& dict,
+    const char* comment
+)
+{
+    auto object = [&](const word& inst)
+    {
+        return IOobject
+        (
+            name,
+            inst,
+            "uniform",
+            runTime,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        );
+    };
+    const IOobject io(object(instance));
+    mkDir(io.path());
+    OFstream os(io.objectPath(), IOstream::ASCII);
+    os.precision(std::numeric_limits<scalar>::max_digits10);
+    object(timeOf(instance)).writeHeader(os, IOdictionary::typeName);
+    if (comment)
+    {
+        os  << comment << nl << nl;
+    }
+    dict.write(os, false);
+    IOobject::writeEndDivider(os);
+    if (!os.good())
+    {
+        FatalErrorInFunction
+            << "Failed writing " << os.name() << exit(FatalError);
+    }
+}
+
+
 Foam::label Foam::meshless::atomicTimeWriter::removeLeftovers
 (
     const Time& runTime
@@ -240,34 +281,7 @@ void Foam::meshless::atomicTimeWriter::writeTimeState
     timeDict.add("deltaT", runTime_.timeToUserTime(runTime_.deltaTValue()));
     timeDict.add("deltaT0", runTime_.timeToUserTime(runTime_.deltaT0Value()));
     timeDict.merge(extra);
-
-    auto object = [&](const word& instance)
-    {
-        return IOobject
-        (
-            "time",
-            instance,
-            "uniform",
-            runTime_,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        );
-    };
-    const IOobject io(object(instance()));
-    mkDir(io.path());
-    {
-        OFstream os(io.objectPath(), IOstream::ASCII);
-        os.precision(digits);
-        object(pending_).writeHeader(os, IOdictionary::typeName);
-        timeDict.write(os, false);
-        IOobject::writeEndDivider(os);
-        if (!os.good())
-        {
-            FatalErrorInFunction
-                << "Failed writing " << os.name() << exit(FatalError);
-        }
-    }
+    writeUniform(runTime_, instance(), "time", timeDict);
 
     // Any AUTO_WRITE object of the registry (none of the solvers' own)
     timeNameScope scope(runTime_, instance());

@@ -6,9 +6,7 @@
 #include "lagrangianIO.H"
 #include "atomicTimeWriter.H"
 #include "IOField.H"
-#include "IOdictionary.H"
 #include "IFstream.H"
-#include "OFstream.H"
 #include "OSspecific.H"
 #include "HashSet.H"
 #include "cloud.H"
@@ -313,37 +311,16 @@ void Foam::meshless::restartManifest::write
     manifest.add("bodies", bodies);
     manifest.add("files", fileNameList(files));
 
-    auto object = [&](const word& inst)
-    {
-        return IOobject
-        (
-            manifestName,
-            inst,
-            "uniform",
-            runTime,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        );
-    };
-    const IOobject io(object(instance));
-    mkDir(io.path());
-    OFstream os(io.objectPath(), IOstream::ASCII);
-    object(atomicTimeWriter::timeOf(instance))
-        .writeHeader(os, IOdictionary::typeName);
-    os  << "// What this time directory holds for a restart: per body its"
-        << " particle count" << nl
-        << "// and the class of each field of its cloud (each with an entry"
-        << " per particle)," << nl
-        << "// and every other file written with it. A start from this time"
-        << " checks them." << nl << nl;
-    manifest.write(os, false);
-    IOobject::writeEndDivider(os);
-    if (!os.good())
-    {
-        FatalErrorInFunction
-            << "Failed writing " << os.name() << exit(FatalError);
-    }
+    atomicTimeWriter::writeUniform
+    (
+        runTime, instance, manifestName, manifest,
+        "// What this time directory holds for a restart: per body its"
+        " particle count\n"
+        "// and the class of each field of its cloud (each with an entry"
+        " per particle),\n"
+        "// and every other file written with it. A start from this time"
+        " checks them."
+    );
 }
 
 

@@ -13,6 +13,7 @@
 #include <vtkXMLPolyDataWriter.h>
 
 #include "vtpWriter.H"
+#include "atomicTimeWriter.H"
 #include "OSspecific.H"
 #include "OFstream.H"
 #include "error.H"
@@ -20,38 +21,24 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
-#include <fcntl.h>
-#include <unistd.h>
 #include <utility>
 #include <vector>
 
 namespace
 {
 
-//- fsync a file (or directory)
-void syncPath(const Foam::fileName& path)
-{
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd >= 0)
-    {
-        ::fsync(fd);
-        ::close(fd);
-    }
-}
-
-
 //- Sync a completely written file and rename it into place
 void commitFile(const Foam::fileName& tmp, const Foam::fileName& file)
 {
     using namespace Foam;
-    syncPath(tmp);
+    meshless::atomicTimeWriter::syncPath(tmp);
     if (::rename(tmp.c_str(), file.c_str()) != 0)
     {
         FatalErrorInFunction
             << "Cannot rename " << tmp << " to " << file << ": "
             << std::strerror(errno) << exit(FatalError);
     }
-    syncPath(file.path());
+    meshless::atomicTimeWriter::syncPath(file.path());
 }
 
 } // End anonymous namespace

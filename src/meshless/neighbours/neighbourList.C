@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "neighbourList.H"
+#include "dispatchDim.H"
 #include <algorithm>
 
 #ifdef _OPENMP
@@ -125,25 +126,18 @@ void Foam::meshless::neighbourList::build
         std::vector<label>& buf = threadIndex_[t];
         size_t used = 0;
 
-        if (cellsB.periodic().any())
+        const bool periodic = cellsB.periodic().any();
+        dispatchDim(dim, [&](auto d)
         {
-            if (dim == 2)
+            if (periodic)
             {
-                queryChunk<2, true>(cellsB, xA, i0, i1, excludeSelf, buf, used);
+                queryChunk<d, true>(cellsB, xA, i0, i1, excludeSelf, buf, used);
             }
             else
             {
-                queryChunk<3, true>(cellsB, xA, i0, i1, excludeSelf, buf, used);
+                queryChunk<d, false>(cellsB, xA, i0, i1, excludeSelf, buf, used);
             }
-        }
-        else if (dim == 2)
-        {
-            queryChunk<2, false>(cellsB, xA, i0, i1, excludeSelf, buf, used);
-        }
-        else
-        {
-            queryChunk<3, false>(cellsB, xA, i0, i1, excludeSelf, buf, used);
-        }
+        });
         threadStart_[t + 1] = label(used);
 
         #pragma omp barrier

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "neighbourRelation.H"
+#include "dispatchDim.H"
 #include "error.H"
 #include <cmath>
 
@@ -182,13 +183,12 @@ void Foam::meshless::neighbourRelation::update(const label stamp)
 void Foam::meshless::neighbourRelation::updateGeometry()
 {
     if (!(cached_ & (separation | kernelValue | kernelGradient))) return;
-    if (cellsB_.periodic().any())
+    const bool periodic = cellsB_.periodic().any();
+    dispatchDim(dim(), [&](auto d)
     {
-        if (dim() == 2) geometryImpl<2, true>();
-        else geometryImpl<3, true>();
-    }
-    else if (dim() == 2) geometryImpl<2, false>();
-    else geometryImpl<3, false>();
+        if (periodic) geometryImpl<d, true>();
+        else geometryImpl<d, false>();
+    });
 }
 
 

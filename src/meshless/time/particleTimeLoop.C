@@ -24,6 +24,25 @@ double wallSeconds()
     return duration<double>(steady_clock::now().time_since_epoch()).count();
 }
 
+//- <time>/uniform/time of the Time's current time (empty when absent)
+Foam::dictionary uniformTime(const Foam::Time& runTime)
+{
+    using Foam::IOobject;
+    return Foam::IOdictionary
+    (
+        IOobject
+        (
+            "time",
+            runTime.timeName(),
+            "uniform",
+            runTime,
+            IOobject::READ_IF_PRESENT,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+}
+
 } // End anonymous namespace
 
 
@@ -49,19 +68,7 @@ Foam::meshless::particleTimeLoop::particleTimeLoop
 
     // The write-time grid of the run's first start, when this start lies
     // on it (a restart from a write time)
-    IOdictionary timeDict
-    (
-        IOobject
-        (
-            "time",
-            runTime.timeName(),
-            "uniform",
-            runTime,
-            IOobject::READ_IF_PRESENT,
-            IOobject::NO_WRITE,
-            false
-        )
-    );
+    const dictionary timeDict(uniformTime(runTime));
     scalar origin = writeOrigin_;
     if (timeDict.readIfPresent("writeOrigin", origin))
     {
@@ -112,19 +119,7 @@ void Foam::meshless::particleTimeLoop::checkEndTime(const Time& runTime)
 
 void Foam::meshless::particleTimeLoop::restoreStartTime(Time& runTime)
 {
-    IOdictionary timeDict
-    (
-        IOobject
-        (
-            "time",
-            runTime.timeName(),
-            "uniform",
-            runTime,
-            IOobject::READ_IF_PRESENT,
-            IOobject::NO_WRITE,
-            false
-        )
-    );
+    const dictionary timeDict(uniformTime(runTime));
     // Written in user time, as Time writes it
     scalar userValue = 0;
     if (!timeDict.readIfPresent("value", userValue))

@@ -11,7 +11,6 @@ Foam::meshless::deformingGhost::deformingGhost
 )
 :
     ghostBoundary(body, slipType::noSlip, -GREAT, "ghost"),
-    body_(body),
     acc_
     (
         accName.empty()

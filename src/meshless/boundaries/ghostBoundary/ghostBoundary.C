@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "ghostBoundary.H"
+#include "dispatchDim.H"
 #include "correctionMatrix.H"
 #include <algorithm>
 
@@ -65,13 +66,6 @@ Foam::meshless::ghostBoundary::ghostBoundary
             prefixed(prefix, "Uvisc"), particleField::kind::vector
         )
     ),
-    Minv_
-    (
-        body.particles().addScratchField
-        (
-            prefixed(prefix, "Minv"), particleField::kind::tensor
-        )
-    ),
     S_
     (
         body.particles().addScratchField
@@ -120,20 +114,13 @@ void Foam::meshless::ghostBoundary::computeOwnShapeTensors
     particleField& M
 ) const
 {
-    if (ghostBody_.dim() == 2)
+    dispatchDim(ghostBody_.dim(), [&](auto d)
     {
-        correctionMatrix::moments<2>
+        correctionMatrix::moments<d>
         (
             own, V0_.data(), correctionMatrix::kernelWeight(), M.data()
         );
-    }
-    else
-    {
-        correctionMatrix::moments<3>
-        (
-            own, V0_.data(), correctionMatrix::kernelWeight(), M.data()
-        );
-    }
+    });
 }
 
 
@@ -168,7 +155,6 @@ struct interpolationTerm
     double* m;
     double* Uv;
     double* S;
-    double* Minv;
 
     sum start(const Foam::label s) const
     {
@@ -200,7 +186,6 @@ struct interpolationTerm
         using namespace Foam::meshless;
         tensorD<Dim> inv;
         correctionMatrix::robustInverse<Dim>(a.M, inv);
-        tens<Dim>(Minv, s) = inv;
 
         // Eq. 52: gravity less the boundary's own acceleration
         vectorD<Dim> gEff = g;
@@ -257,7 +242,7 @@ void Foam::meshless::ghostBoundary::interpolateImpl
             pF, rhoF, UF, ownShapeTensors(), gD, c0, rho0, minPressure_,
             slip_ == slipType::noSlip, accelerations(), Uown_.data(),
             normals(), V0_.data(), p_.data(), rho_.data(), mass_.data(),
-            Uvisc_.data(), S_.data(), Minv_.data()
+            Uvisc_.data(), S_.data()
         }
     );
 }
@@ -275,14 +260,10 @@ void Foam::meshless::ghostBoundary::interpolate
     const scalar rho0
 )
 {
-    if (ghostBody_.dim() == 2)
+    dispatchDim(ghostBody_.dim(), [&](auto d)
     {
-        interpolateImpl<2>(ghostToFluid, pF, rhoF, UF, VF, g, c0, rho0);
-    }
-    else
-    {
-        interpolateImpl<3>(ghostToFluid, pF, rhoF, UF, VF, g, c0, rho0);
-    }
+        interpolateImpl<d>(ghostToFluid, pF, rhoF, UF, VF, g, c0, rho0);
+    });
 }
 
 

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "ghostWall.H"
+#include "dispatchDim.H"
 #include "dictionaryChecks.H"
 #include "particleScene.H"
 #include "smallTensor.H"
@@ -367,10 +368,10 @@ void Foam::meshless::bodyModels::ghostWall::prepare
         return;
     }
     computeOwnShapeTensors(own, Mwall_);
-    const label nCompleted =
-        body_.dim() == 3
-      ? completeFarSide<3>(W, own)
-      : completeFarSide<2>(W, own);
+    const label nCompleted = dispatchDim
+    (
+        body_.dim(), [&](auto d) { return completeFarSide<d>(W, own); }
+    );
     if (nCompleted > 0)
     {
         Info<< "    ghostWall " << body_.name() << ": shape tensors"

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "fsiCoupling.H"
+#include "dictionaryChecks.H"
 
 Foam::autoPtr<Foam::meshless::fsiCoupling> Foam::meshless::fsiCoupling::New
 (
@@ -11,18 +12,10 @@ Foam::autoPtr<Foam::meshless::fsiCoupling> Foam::meshless::fsiCoupling::New
 )
 {
     const word type(dict.get<word>("type"));
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(type);
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "coupling type",
-            type,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
-    }
-    return cstrIter()(dict, scene);
+    return selectConstructor
+    (
+        dict, "coupling type", type, *dictionaryConstructorTablePtr_
+    )(dict, scene);
 }
 
 

@@ -89,10 +89,6 @@ Foam::meshless::couplings::ulphPd::ulphPd
 }
 
 
-Foam::meshless::couplings::ulphPd::~ulphPd()
-{}
-
-
 bool Foam::meshless::couplings::ulphPd::couples(const particleBody& b) const
 {
     if (&b == fluidBody_) return true;

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "artificialViscosity.H"
+#include "dispatchDim.H"
 #include "pairLoop.H"
 #include "dictionaryChecks.H"
 #include "addToRunTimeSelectionTable.H"
@@ -110,8 +111,7 @@ void Foam::meshless::effects::artificialViscosity::addPairAcceleration
     particleField& acc
 ) const
 {
-    if (ctx.dim == 2) add<2>(ctx, acc);
-    else add<3>(ctx, acc);
+    dispatchDim(ctx.dim, [&](auto d) { add<d>(ctx, acc); });
 }
 
 

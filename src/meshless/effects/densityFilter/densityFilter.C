@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "densityFilter.H"
+#include "dispatchDim.H"
 #include "pairLoop.H"
 #include "dictionaryChecks.H"
 #include "addToRunTimeSelectionTable.H"
@@ -168,14 +169,10 @@ void Foam::meshless::effects::densityFilter::filter
 )
 {
     const bool fit = method == methodType::MLS;
-    if (ctx.dim == 2)
+    dispatchDim(ctx.dim, [&](auto d)
     {
-        fit ? filterPass<2, true>(ctx, out) : filterPass<2, false>(ctx, out);
-    }
-    else
-    {
-        fit ? filterPass<3, true>(ctx, out) : filterPass<3, false>(ctx, out);
-    }
+        fit ? filterPass<d, true>(ctx, out) : filterPass<d, false>(ctx, out);
+    });
 }
 
 

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "effect.H"
+#include "dictionaryChecks.H"
 
 Foam::autoPtr<Foam::meshless::effect> Foam::meshless::effect::New
 (
@@ -12,19 +13,8 @@ Foam::autoPtr<Foam::meshless::effect> Foam::meshless::effect::New
 )
 {
     const word effectType(dict.getOrDefault<word>("type", name));
-
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(effectType);
-
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "effect",
-            effectType,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
-    }
-
-    return cstrIter()(name, dict, body);
+    return selectConstructor
+    (
+        dict, "effect", effectType, *dictionaryConstructorTablePtr_
+    )(name, dict, body);
 }

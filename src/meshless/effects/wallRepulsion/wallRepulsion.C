@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "wallRepulsion.H"
+#include "dispatchDim.H"
 #include "pairLoop.H"
 #include "dictionaryChecks.H"
 #include "addToRunTimeSelectionTable.H"
@@ -78,20 +79,13 @@ void addImpl
     {
         if (ctx.wallSource[k]) walls.push_back(ctx.sources[k]);
     }
-    if (ctx.dim == 2)
+    Foam::meshless::dispatchDim(ctx.dim, [&](auto d)
     {
         Foam::meshless::gather
         (
-            ctx.n, walls, repulsionTerm<2>{D, r0, r0*r0, p1, p2, a, count}
+            ctx.n, walls, repulsionTerm<d>{D, r0, r0*r0, p1, p2, a, count}
         );
-    }
-    else
-    {
-        Foam::meshless::gather
-        (
-            ctx.n, walls, repulsionTerm<3>{D, r0, r0*r0, p1, p2, a, count}
-        );
-    }
+    });
 }
 
 } // End anonymous namespace

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "ulph.H"
+#include "dispatchDim.H"
 #include "ulphEquations.H"
 #include "particleScene.H"
 #include "effect.H"
@@ -62,10 +63,6 @@ Foam::meshless::bodyModels::ulph::ulph
 }
 
 
-Foam::meshless::bodyModels::ulph::~ulph()
-{}
-
-
 Foam::scalar Foam::meshless::bodyModels::ulph::pressureOf
 (
     const scalar rho
@@ -97,12 +94,10 @@ void Foam::meshless::bodyModels::ulph::connectModel(particleScene& scene)
         );
     }
     const smoothingKernel& W = body_.kernel();
-    lambdaFloor_ = floorRatio_*
-    (
-        body_.dim() == 3
-      ? correctionMatrix::fullSupportEigenvalue<3>(W, body_.spacing())
-      : correctionMatrix::fullSupportEigenvalue<2>(W, body_.spacing())
-    );
+    lambdaFloor_ = floorRatio_*dispatchDim(body_.dim(), [&](auto d)
+    {
+        return correctionMatrix::fullSupportEigenvalue<d>(W, body_.spacing());
+    });
 }
 
 
@@ -234,8 +229,7 @@ void Foam::meshless::bodyModels::ulph::evaluateDim
     costAccounting& costs
 )
 {
-    if (body_.dim() == 2) evaluate<2>(t, costs);
-    else evaluate<3>(t, costs);
+    dispatchDim(body_.dim(), [&](auto d) { evaluate<d>(t, costs); });
 }
 
 

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "smoothingKernel.H"
+#include "dictionaryChecks.H"
 
 Foam::autoPtr<Foam::meshless::smoothingKernel>
 Foam::meshless::smoothingKernel::New
@@ -13,19 +14,8 @@ Foam::meshless::smoothingKernel::New
 )
 {
     const word kernelType(dict.get<word>("type"));
-
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(kernelType);
-
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "kernel",
-            kernelType,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
-    }
-
-    return cstrIter()(dict, dim, spacing);
+    return selectConstructor
+    (
+        dict, "kernel", kernelType, *dictionaryConstructorTablePtr_
+    )(dict, dim, spacing);
 }

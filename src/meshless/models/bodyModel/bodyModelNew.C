@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "bodyModel.H"
+#include "dictionaryChecks.H"
 
 Foam::autoPtr<Foam::meshless::bodyModel> Foam::meshless::bodyModel::New
 (
@@ -11,19 +12,8 @@ Foam::autoPtr<Foam::meshless::bodyModel> Foam::meshless::bodyModel::New
 )
 {
     const word modelType(dict.get<word>("model"));
-
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
-
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "model",
-            modelType,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
-    }
-
-    return cstrIter()(body, dict);
+    return selectConstructor
+    (
+        dict, "model", modelType, *dictionaryConstructorTablePtr_
+    )(body, dict);
 }

@@ -7,9 +7,7 @@
 #include "dictionaryChecks.H"
 #include "OSspecific.H"
 #include "IFstream.H"
-#include "IOdictionary.H"
 #include "atomicTimeWriter.H"
-#include <limits>
 
 namespace Foam
 {
@@ -38,7 +36,6 @@ Foam::meshless::monitor::monitor
         dict.found("interval") ? readPositiveLabel(dict, "interval") : 1
     ),
     lastTime_(-GREAT),
-    dict_(dict),
     scene_(scene)
 {}
 
@@ -51,21 +48,10 @@ Foam::autoPtr<Foam::meshless::monitor> Foam::meshless::monitor::New
 )
 {
     const word monitorType(dict.get<word>("type"));
-
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(monitorType);
-
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "monitor",
-            monitorType,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
-    }
-
-    return cstrIter()(name, dict, scene);
+    return selectConstructor
+    (
+        dict, "monitor", monitorType, *dictionaryConstructorTablePtr_
+    )(name, dict, scene);
 }
 
 
@@ -171,34 +157,11 @@ void Foam::meshless::monitor::writeStates
         return;
     }
 
-    auto object = [&](const word& inst)
-    {
-        return IOobject
-        (
-            stateName,
-            inst,
-            "uniform",
-            runTime,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        );
-    };
-    const IOobject io(object(instance));
-    mkDir(io.path());
-    OFstream os(io.objectPath(), IOstream::ASCII);
-    os.precision(std::numeric_limits<scalar>::max_digits10);
-    object(atomicTimeWriter::timeOf(instance))
-        .writeHeader(os, IOdictionary::typeName);
-    os  << "// The monitors' state a restart needs to continue their series"
-        << nl << nl;
-    states.write(os, false);
-    IOobject::writeEndDivider(os);
-    if (!os.good())
-    {
-        FatalErrorInFunction
-            << "Failed writing " << os.name() << exit(FatalError);
-    }
+    atomicTimeWriter::writeUniform
+    (
+        runTime, instance, stateName, states,
+        "// The monitors' state a restart needs to continue their series"
+    );
 }
 
 

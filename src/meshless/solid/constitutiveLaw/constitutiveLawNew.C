@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "constitutiveLaw.H"
+#include "dictionaryChecks.H"
 
 Foam::autoPtr<Foam::meshless::constitutiveLaw>
 Foam::meshless::constitutiveLaw::New
@@ -14,21 +15,10 @@ Foam::meshless::constitutiveLaw::New
 {
     const dictionary& dict = bodyDict.subDict("constitutiveLaw");
     const word lawType(dict.get<word>("type"));
-
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(lawType);
-
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "constitutiveLaw",
-            lawType,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
-    }
-
-    return cstrIter()(dict, dim, particles);
+    return selectConstructor
+    (
+        dict, "constitutiveLaw", lawType, *dictionaryConstructorTablePtr_
+    )(dict, dim, particles);
 }
 
 

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "correspondenceSolid.H"
+#include "dispatchDim.H"
 #include "correspondenceOperators.H"
 #include "particleScene.H"
 #include "dictionaryChecks.H"
@@ -96,19 +97,16 @@ Foam::label Foam::meshless::correspondenceSolid::fit()
 
     using namespace correctionMatrix;
     char* ok = resolved_.data();
-    label nSingular = 0;
-    if (weights() == weighting::kernel)
+    const auto fitWith = [&](auto w)
     {
-        nSingular = dim == 2
-          ? fitWeights<2>(*ref_, V, kernelWeight(), order_, L, intact, G_.data(), H, ok)
-          : fitWeights<3>(*ref_, V, kernelWeight(), order_, L, intact, G_.data(), H, ok);
-    }
-    else
-    {
-        nSingular = dim == 2
-          ? fitWeights<2>(*ref_, V, gradientWeight(), order_, L, intact, G_.data(), H, ok)
-          : fitWeights<3>(*ref_, V, gradientWeight(), order_, L, intact, G_.data(), H, ok);
-    }
+        return dispatchDim(dim, [&](auto d)
+        {
+            return fitWeights<d>(*ref_, V, w, order_, L, intact, G_.data(), H, ok);
+        });
+    };
+    const label nSingular = weights() == weighting::kernel
+        ? fitWith(kernelWeight())
+        : fitWith(gradientWeight());
     afterFit();
     return nSingular;
 }
@@ -117,14 +115,10 @@ Foam::label Foam::meshless::correspondenceSolid::fit()
 void Foam::meshless::correspondenceSolid::computeF(particleField& F) const
 {
     const double* x = body_.particles().positions().data();
-    if (body_.dim() == 2)
+    dispatchDim(body_.dim(), [&](auto d)
     {
-        correspondence::deformationGradient<2>(*ref_, G_.data(), X0_.data(), x, F.data());
-    }
-    else
-    {
-        correspondence::deformationGradient<3>(*ref_, G_.data(), X0_.data(), x, F.data());
-    }
+        correspondence::deformationGradient<d>(*ref_, G_.data(), X0_.data(), x, F.data());
+    });
 }
 
 
@@ -165,14 +159,10 @@ void Foam::meshless::correspondenceSolid::computeStress()
 {
     const label n = body_.particles().size();
     const constitutiveLaw& law = law_();
-    if (body_.dim() == 2)
+    dispatchDim(body_.dim(), [&](auto d)
     {
-        stressOf<2>(law, n, resolved_.data(), F_.data(), Fold_.data(), P_.data());
-    }
-    else
-    {
-        stressOf<3>(law, n, resolved_.data(), F_.data(), Fold_.data(), P_.data());
-    }
+        stressOf<d>(law, n, resolved_.data(), F_.data(), Fold_.data(), P_.data());
+    });
     adjustStress();
 }
 
@@ -210,14 +200,10 @@ void Foam::meshless::correspondenceSolid::rebase()
 void Foam::meshless::correspondenceSolid::internalForce(double* f) const
 {
     const double* V = V0_.data();
-    if (body_.dim() == 2)
+    dispatchDim(body_.dim(), [&](auto d)
     {
-        correspondence::internalForce<2>(*ref_, G_.data(), V, P_.data(), f);
-    }
-    else
-    {
-        correspondence::internalForce<3>(*ref_, G_.data(), V, P_.data(), f);
-    }
+        correspondence::internalForce<d>(*ref_, G_.data(), V, P_.data(), f);
+    });
 }
 
 
@@ -292,14 +278,10 @@ void Foam::meshless::correspondenceSolid::referenceNormals
     particleField& N
 ) const
 {
-    if (body_.dim() == 2)
+    dispatchDim(body_.dim(), [&](auto d)
     {
-        correspondence::surfaceNormals<2>(*ref_, V0_.data(), N.data());
-    }
-    else
-    {
-        correspondence::surfaceNormals<3>(*ref_, V0_.data(), N.data());
-    }
+        correspondence::surfaceNormals<d>(*ref_, V0_.data(), N.data());
+    });
 }
 
 

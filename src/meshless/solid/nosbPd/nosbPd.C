@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "nosbPd.H"
+#include "dispatchDim.H"
 #include "nosbPdOperators.H"
 #include "particleScene.H"
 #include "dictionaryChecks.H"
@@ -67,10 +68,6 @@ Foam::meshless::bodyModels::nosbPd::nosbPd
        *body.kernel().h();
     readFailure();
 }
-
-
-Foam::meshless::bodyModels::nosbPd::~nosbPd()
-{}
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -223,15 +220,13 @@ Foam::scalar Foam::meshless::bodyModels::nosbPd::stableDeltaT
 void Foam::meshless::bodyModels::nosbPd::addStabilisation(double* f)
 {
     if (C_ <= 0 && eta_ <= 0) return;
-    if (body_.dim() == 2) stabilisationForce<2>(f);
-    else stabilisationForce<3>(f);
+    dispatchDim(body_.dim(), [&](auto d) { stabilisationForce<d>(f); });
 }
 
 
 Foam::scalar Foam::meshless::bodyModels::nosbPd::stabilisationEnergy() const
 {
-    if (body_.dim() == 2) stabilisationEnergyDensity<2>();
-    else stabilisationEnergyDensity<3>();
+    dispatchDim(body_.dim(), [&](auto d) { stabilisationEnergyDensity<d>(); });
     scalar E = 0;
     for (label i = 0; i < Ws_.size(); ++i) E += V0_(i, 0)*Ws_(i, 0);
     return E;

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "tlsph.H"
+#include "dispatchDim.H"
 #include "tlsphOperators.H"
 #include "particleScene.H"
 #include "dictionaryChecks.H"
@@ -209,8 +210,7 @@ Foam::scalar Foam::meshless::bodyModels::tlsph::hourglassEnergy() const
 
 void Foam::meshless::bodyModels::tlsph::addStabilisation(double* f)
 {
-    if (body_.dim() == 2) stabilisation<2>(f);
-    else stabilisation<3>(f);
+    dispatchDim(body_.dim(), [&](auto d) { stabilisation<d>(f); });
 }
 
 
@@ -221,11 +221,11 @@ Foam::scalar Foam::meshless::bodyModels::tlsph::stabilisationEnergy() const
     scalar W = 0;
     if (taylor_)
     {
-        W += dim == 2 ? strainGradientStress<2>() : strainGradientStress<3>();
+        W += dispatchDim(dim, [&](auto d) { return strainGradientStress<d>(); });
     }
     if (hourglass_ > 0)
     {
-        W += dim == 2 ? hourglassEnergy<2>() : hourglassEnergy<3>();
+        W += dispatchDim(dim, [&](auto d) { return hourglassEnergy<d>(); });
     }
     return W;
 }
@@ -233,21 +233,19 @@ Foam::scalar Foam::meshless::bodyModels::tlsph::stabilisationEnergy() const
 
 void Foam::meshless::bodyModels::tlsph::adjustStress()
 {
-    if (body_.dim() == 2)
+    dispatchDim(body_.dim(), [&](auto d)
     {
-        tlsphOperators::clearImageStress<2>(mirrors_, P_.data());
-    }
-    else
-    {
-        tlsphOperators::clearImageStress<3>(mirrors_, P_.data());
-    }
+        tlsphOperators::clearImageStress<d>(mirrors_, P_.data());
+    });
 }
 
 
 void Foam::meshless::bodyModels::tlsph::adjustForce(double* f)
 {
-    if (body_.dim() == 2) tlsphOperators::foldImageForces<2>(mirrors_, f);
-    else tlsphOperators::foldImageForces<3>(mirrors_, f);
+    dispatchDim(body_.dim(), [&](auto d)
+    {
+        tlsphOperators::foldImageForces<d>(mirrors_, f);
+    });
 }
 
 

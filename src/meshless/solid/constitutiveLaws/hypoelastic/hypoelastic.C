@@ -94,7 +94,7 @@ Foam::tensor Foam::meshless::constitutiveLaws::hypoelastic::elasticIncrement
     const scalar G = elastic_.G();
     if (dim_ == 3)
     {
-        return elastic_.lambda()*tr(gamma)*tensor::I + 2*G*gamma;
+        return hooke(elastic_.lambda(), G, gamma);
     }
 
     // 2D: gamma has no zz part; the in-plane response is the plane model's

@@ -55,13 +55,13 @@ Foam::tensor Foam::meshless::constitutiveLaws::linearElastic::stress
 {
     if (kinematics_ == kinematicsType::small)
     {
-        return hooke(symm(F) - tensor::I);
+        return hooke(lambda_, G_, symm(F) - tensor::I);
     }
 
     const tensor E = 0.5*((F.T() & F) - tensor::I);
     const tensor Finv = inv(F);
     const tensor e = Finv.T() & E & Finv;
-    return det(F)*(hooke(e) & Finv.T());
+    return det(F)*(hooke(lambda_, G_, e) & Finv.T());
 }
 
 
@@ -74,13 +74,13 @@ Foam::scalar Foam::meshless::constitutiveLaws::linearElastic::energyDensity
     if (kinematics_ == kinematicsType::small)
     {
         const tensor e = symm(F) - tensor::I;
-        return 0.5*(hooke(e) && e);
+        return 0.5*(hooke(lambda_, G_, e) && e);
     }
 
     const tensor E = 0.5*((F.T() & F) - tensor::I);
     const tensor Finv = inv(F);
     const tensor e = Finv.T() & E & Finv;
-    const tensor S = det(F)*(Finv & hooke(e) & Finv.T());
+    const tensor S = det(F)*(Finv & hooke(lambda_, G_, e) & Finv.T());
     return 0.5*(S && E);
 }
 

@@ -48,7 +48,7 @@ Foam::tensor Foam::meshless::constitutiveLaws::stVenantKirchhoff::stress
 ) const
 {
     const tensor E = 0.5*((F.T() & F) - tensor::I);
-    return F & secondPK(E);
+    return F & hooke(lambda_, G_, E);
 }
 
 
@@ -60,7 +60,7 @@ Foam::meshless::constitutiveLaws::stVenantKirchhoff::energyDensity
 ) const
 {
     const tensor E = 0.5*((F.T() & F) - tensor::I);
-    return 0.5*(secondPK(E) && E);
+    return 0.5*(hooke(lambda_, G_, E) && E);
 }
 
 
