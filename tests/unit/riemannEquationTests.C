@@ -77,6 +77,18 @@ struct block
 };
 
 
+//- 1/r per pair of a relation (sourceData::invR)
+std::vector<double> inverseDistances(const neighbourRelation& rel)
+{
+    std::vector<double> ir(rel.nPairs());
+    for (label q = 0; q < rel.nPairs(); ++q)
+    {
+        ir[q] = rel.r()[q] > 0 ? 1/rel.r()[q] : 0;
+    }
+    return ir;
+}
+
+
 //- sum_j (f_j - f_i) B_i grad_i W_ij V_j
 template<int Dim>
 struct gradientTerm
@@ -146,8 +158,9 @@ void expectMomentumConserved(const char* what)
     const std::vector<double> B =
         b.correction(P == pairing::none, 0);
 
+    const std::vector<double> ir = inverseDistances(*b.sources[0].rel);
     const sourceData src{true, p.data(), B.data(), U.data(), nullptr,
-                         nullptr, true, false};
+                         nullptr, true, false, ir.data()};
     std::vector<double> aPrior(n*Dim, 0.0), aP(n*Dim), aD(n*Dim), drho(n);
     gather
     (
@@ -161,10 +174,10 @@ void expectMomentumConserved(const char* what)
     gather
     (
         n, b.sources,
-        dissipationTerm<Dim>
+        dissipationTerm<Dim, limiterType::full>
         {
-            &src, U.data(), rho.data(), 1000*20.0, 20.0, limiterType::full,
-            aD.data(), drho.data()
+            &src, U.data(), rho.data(), 1000*20.0, 3/20.0, aD.data(),
+            drho.data()
         }
     );
     for (const auto* a : {&aP, &aD})
@@ -208,6 +221,22 @@ TEST(riemannEquations, riemannSolutionOfEqualStatesIsTheState)
     EXPECT_DOUBLE_EQ(limiter(0.5, c0, limiterType::expansion), 0.075);
     EXPECT_EQ(limiter(-50, c0, limiterType::compression), 1);
     EXPECT_EQ(limiter(0.1, c0, limiterType::full), 1);
+    EXPECT_EQ(limiter(-50, c0, limiterType::none), 0);
+
+    // The pair loops' compile-time limiter is the same function
+    for (const double u : {-50.0, -0.5, 0.0, 0.5, 50.0})
+    {
+        EXPECT_DOUBLE_EQ
+        (
+            limited<limiterType::compression>(u, 3/c0),
+            limiter(u, c0, limiterType::compression)
+        );
+        EXPECT_DOUBLE_EQ
+        (
+            limited<limiterType::expansion>(u, 3/c0),
+            limiter(u, c0, limiterType::expansion)
+        );
+    }
 }
 
 
@@ -274,8 +303,9 @@ TEST(riemannEquations, uniformPressureOnAFullLatticeExertsNoForce)
     const label n = b.n;
     std::vector<double> p(n, 300), rho(n, 1000), U(2*n, 0);
     const std::vector<double> B = b.correction(true, 0);
+    const std::vector<double> ir = inverseDistances(*b.sources[0].rel);
     const sourceData src{true, p.data(), B.data(), U.data(), nullptr,
-                         nullptr, true, false};
+                         nullptr, true, false, ir.data()};
     std::vector<double> a0(2*n, 0.0), aP(2*n), drho(n);
     gather
     (

@@ -9,6 +9,7 @@
 #include "transportVelocity.H"
 #include "dictionaryChecks.H"
 #include "addToRunTimeSelectionTable.H"
+#include "dispatchDim.H"
 #include <algorithm>
 #include <cmath>
 
@@ -42,6 +43,7 @@ Foam::meshless::bodyModels::riemannWcsph::limiterTypeNames
     { riemannEquations::limiterType::compression, "compression" },
     { riemannEquations::limiterType::expansion, "expansion" },
     { riemannEquations::limiterType::full, "full" },
+    { riemannEquations::limiterType::none, "none" },
 });
 
 
@@ -197,10 +199,11 @@ void Foam::meshless::bodyModels::riemannWcsph::setSources()
 {
     using riemannEquations::sourceData;
     src_.resize(1 + boundaries_.size());
+    invR_.resize(1 + boundaries_.size());
     src_[0] = sourceData
     {
         true, p_.data(), B_.data(), U_.data(), nullptr, nullptr, true,
-        clipWallPressure_
+        clipWallPressure_, nullptr
     };
     for (size_t k = 0; k < boundaries_.size(); ++k)
     {
@@ -208,7 +211,7 @@ void Foam::meshless::bodyModels::riemannWcsph::setSources()
         src_[k + 1] = sourceData
         {
             false, nullptr, nullptr, g.U(), g.accelerations(), g.normals(),
-            g.slipNormals() == nullptr, clipWallPressure_
+            g.slipNormals() == nullptr, clipWallPressure_, nullptr
         };
     }
 }
@@ -248,6 +251,52 @@ void Foam::meshless::bodyModels::riemannWcsph::reinitialiseDensity()
         }
     );
     updatePressure();
+}
+
+
+template<int Dim, Foam::meshless::riemannEquations::limiterType L>
+void Foam::meshless::bodyModels::riemannWcsph::dissipation
+(
+    const double* U,
+    const double* rho,
+    const double rho0c0
+)
+{
+    gather
+    (
+        U_.size(), ctx_.sources,
+        riemannEquations::dissipationTerm<Dim, L>
+        {
+            src_.data(), U, rho, rho0c0, 3/c0_, aDiss_.data(), drho_.data()
+        }
+    );
+}
+
+
+template<int Dim>
+void Foam::meshless::bodyModels::riemannWcsph::dissipation
+(
+    const double* U,
+    const double* rho,
+    const double rho0c0
+)
+{
+    using riemannEquations::limiterType;
+    switch (limiter_)
+    {
+        case limiterType::compression:
+            dissipation<Dim, limiterType::compression>(U, rho, rho0c0);
+            break;
+        case limiterType::expansion:
+            dissipation<Dim, limiterType::expansion>(U, rho, rho0c0);
+            break;
+        case limiterType::full:
+            dissipation<Dim, limiterType::full>(U, rho, rho0c0);
+            break;
+        case limiterType::none:
+            dissipation<Dim, limiterType::none>(U, rho, rho0c0);
+            break;
+    }
 }
 
 
@@ -329,7 +378,9 @@ void Foam::meshless::bodyModels::riemannWcsph::advanceDim
         costAccounting::scope timer(costs, summationCost_);
         reinitialiseDensity<Dim>();
     }
+    if (correction_ != correctionType::none || transport_)
     {
+        // B = I without a correction (the transport velocity's weights)
         costAccounting::scope timer(costs, correctionCost_);
         gather
         (
@@ -373,6 +424,21 @@ void Foam::meshless::bodyModels::riemannWcsph::advanceDim
         for (label k = 0; k < nv; ++k) x[k] += dx[k];
     }
 
+    // 1/r of every pair for the acoustic steps (their geometry is that of
+    // the advection step's start)
+    for (size_t k = 0; k < src_.size(); ++k)
+    {
+        const neighbourRelation& rel = *ctx_.sources[k].rel;
+        const label nq = rel.nPairs();
+        std::vector<double>& ir = invR_[k];
+        if (label(ir.size()) < nq) ir.resize(nq);
+        const double* r = rel.r();
+        double* irp = ir.data();
+        #pragma omp parallel for schedule(static)
+        for (label q = 0; q < nq; ++q) irp[q] = r[q] > 0 ? 1/r[q] : 0;
+        src_[k].invR = irp;
+    }
+
     // Acoustic steps
     const label nAc = acoustic_(dt, acousticDeltaT());
     const scalar dts = dt/nAc;
@@ -384,7 +450,7 @@ void Foam::meshless::bodyModels::riemannWcsph::advanceDim
     double* rho = rho_.data();
     double* drho = drho_.data();
     const double* aP = aP_.data();
-    const double* aD = aDiss_.data();
+    const double* aDc = aDiss_.data();
     const double* a0 = aPrior_.data();
 
     for (label s = 0; s < nAc; ++s)
@@ -435,27 +501,19 @@ void Foam::meshless::bodyModels::riemannWcsph::advanceDim
                 break;
         }
         #pragma omp parallel for schedule(static)
-        for (label k = 0; k < nv; ++k) U[k] += dts*(aP[k] + aD[k] + a0[k]);
+        for (label k = 0; k < nv; ++k) U[k] += dts*(aP[k] + aDc[k] + a0[k]);
 
         // Second half: position to the full step, continuity, dissipation
         #pragma omp parallel for schedule(static)
         for (label k = 0; k < nv; ++k) x[k] += 0.5*dts*U[k];
-        gather
-        (
-            n, ctx_.sources,
-            dissipationTerm<Dim>
-            {
-                src_.data(), U, rho, rho0c0, c0_, limiter_, aDiss_.data(),
-                drho
-            }
-        );
+        dissipation<Dim>(U, rho, rho0c0);
         updateDensity(rho, drho, 0.5*dts, rho);
     }
 
     // The accelerations the next advection step is taken from
     double* acc = acc_.data();
     #pragma omp parallel for schedule(static)
-    for (label k = 0; k < nv; ++k) acc[k] = a0[k] + aD[k];
+    for (label k = 0; k < nv; ++k) acc[k] = a0[k] + aDc[k];
 
     updatePressure();
     moveBoundaries(t + dt);
@@ -472,8 +530,7 @@ void Foam::meshless::bodyModels::riemannWcsph::advance
     emptied_ = -1;
     moveBoundaries(t);
     setSources();
-    if (body_.dim() == 2) advanceDim<2>(t, dt, costs);
-    else advanceDim<3>(t, dt, costs);
+    dispatchDim(body_.dim(), [&](auto d) { advanceDim<d>(t, dt, costs); });
 }
 
 
