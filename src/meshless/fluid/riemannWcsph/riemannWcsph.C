@@ -138,6 +138,17 @@ Foam::meshless::bodyModels::riemannWcsph::riemannWcsph
 
     // The geometry is that of the advection step's start: no skin
     if (!dict.found("neighbourSkin")) skin_ = 0;
+
+    // Without a correction B = I throughout (the transport velocity's
+    // weights B_i + B_j)
+    if (correction_ == correctionType::none)
+    {
+        const label dim = body.dim();
+        for (label i = 0; i < B_.size(); ++i)
+        {
+            for (label d = 0; d < dim; ++d) B_(i, d*dim + d) = 1;
+        }
+    }
 }
 
 
@@ -177,21 +188,15 @@ void Foam::meshless::bodyModels::riemannWcsph::connectModel(particleScene&)
 
     // Kernel sum of a full lattice at the body's spacing, self included
     const smoothingKernel& W = body_.kernel();
-    const label dim = body_.dim();
     const scalar dx = body_.spacing();
-    const int m = int(std::ceil(W.radius()/dx));
-    scalar sigma0 = 0;
-    for (int i = -m; i <= m; ++i)
+    const scalar sigma0 = dispatchDim(body_.dim(), [&](auto d)
     {
-        for (int j = -m; j <= m; ++j)
-        {
-            for (int k = (dim == 3 ? -m : 0); k <= (dim == 3 ? m : 0); ++k)
-            {
-                sigma0 += W.W(dx*std::sqrt(scalar(i*i + j*j + k*k)));
-            }
-        }
-    }
-    summationNorm_ = 1/(sigma0*std::pow(dx, dim));
+        return correctionMatrix::latticeSum<d>
+        (
+            W, dx, [&](const double r2) { return W.W(std::sqrt(r2)); }
+        );
+    });
+    summationNorm_ = 1/(sigma0*std::pow(dx, body_.dim()));
 }
 
 
@@ -251,6 +256,50 @@ void Foam::meshless::bodyModels::riemannWcsph::reinitialiseDensity()
         }
     );
     updatePressure();
+}
+
+
+template<int Dim, Foam::meshless::riemannEquations::pairing P>
+void Foam::meshless::bodyModels::riemannWcsph::pressure
+(
+    const double* rho,
+    const double* aPrior,
+    const double rho0c0
+)
+{
+    gather
+    (
+        U_.size(), ctx_.sources,
+        riemannEquations::pressureTerm<Dim, P>
+        {
+            src_.data(), p_.data(), rho, B_.data(), aPrior, rho0c0,
+            aP_.data(), drho_.data()
+        }
+    );
+}
+
+
+template<int Dim>
+void Foam::meshless::bodyModels::riemannWcsph::pressure
+(
+    const double* rho,
+    const double* aPrior,
+    const double rho0c0
+)
+{
+    using riemannEquations::pairing;
+    switch (correction_)
+    {
+        case correctionType::none:
+            pressure<Dim, pairing::none>(rho, aPrior, rho0c0);
+            break;
+        case correctionType::KGC:
+            pressure<Dim, pairing::kgc>(rho, aPrior, rho0c0);
+            break;
+        default:
+            pressure<Dim, pairing::rkgc>(rho, aPrior, rho0c0);
+            break;
+    }
 }
 
 
@@ -378,17 +427,16 @@ void Foam::meshless::bodyModels::riemannWcsph::advanceDim
         costAccounting::scope timer(costs, summationCost_);
         reinitialiseDensity<Dim>();
     }
-    if (correction_ != correctionType::none || transport_)
+    if (correction_ != correctionType::none)
     {
-        // B = I without a correction (the transport velocity's weights)
         costAccounting::scope timer(costs, correctionCost_);
         gather
         (
             n, ctx_.sources,
-            correctionTerm<Dim>
-            {
-                correction_ == correctionType::none, wkgcAlpha_, B_.data()
-            }
+            correctionMatrix::weightedInverseTerm
+            <
+                Dim, correctionMatrix::gradientWeight
+            >{correctionMatrix::gradientWeight(), wkgcAlpha_, B_.data()}
         );
     }
 
@@ -464,42 +512,7 @@ void Foam::meshless::bodyModels::riemannWcsph::advanceDim
         #pragma omp parallel for schedule(static)
         for (label k = 0; k < nv; ++k) x[k] += 0.5*dts*U[k];
 
-        switch (correction_)
-        {
-            case correctionType::none:
-                gather
-                (
-                    n, ctx_.sources,
-                    pressureTerm<Dim, pairing::none>
-                    {
-                        src_.data(), p_.data(), rho, B_.data(), a0, rho0c0,
-                        aP_.data(), drho
-                    }
-                );
-                break;
-            case correctionType::KGC:
-                gather
-                (
-                    n, ctx_.sources,
-                    pressureTerm<Dim, pairing::kgc>
-                    {
-                        src_.data(), p_.data(), rho, B_.data(), a0, rho0c0,
-                        aP_.data(), drho
-                    }
-                );
-                break;
-            default:
-                gather
-                (
-                    n, ctx_.sources,
-                    pressureTerm<Dim, pairing::rkgc>
-                    {
-                        src_.data(), p_.data(), rho, B_.data(), a0, rho0c0,
-                        aP_.data(), drho
-                    }
-                );
-                break;
-        }
+        pressure<Dim>(rho, a0, rho0c0);
         #pragma omp parallel for schedule(static)
         for (label k = 0; k < nv; ++k) U[k] += dts*(aP[k] + aDc[k] + a0[k]);
 
