@@ -75,6 +75,16 @@ def energy_total(case):
     return [e for t, e in rows]
 
 
+def largest_rise(values):
+    """The largest rise of a series above its lowest earlier value (0 when
+    it never rises): how much energy a run gained at most"""
+    low, rise = math.inf, 0.0
+    for e in values:
+        low = min(low, e)
+        rise = max(rise, e - low)
+    return rise
+
+
 def closest_distance(points, others, radius):
     """Smallest distance from any of points to any of others, searched
     through a bucket grid of the others (cell size radius); inf when none

@@ -49,22 +49,18 @@ sys.path.insert(0, os.path.join(project, "etc", "python"))
 from foamCloud import read_positions, times  # noqa: E402
 from foamDict import dictionary_entry  # noqa: E402
 from foamMonitor import (arguments, case_spacing, interp, load_runs,  # noqa
-                         monitor_rows, pyplot, result_suffix, run_cost,
-                         save_run, wall_time)
-from fsiChecks import energy_total  # noqa: E402
+                         monitor_rows, pyplot, read_rows, result_suffix,
+                         run_cost, save_run, wall_time)
+from fsiChecks import energy_total, largest_rise  # noqa: E402
 
 H, G, RHO0, DX0 = 0.057, 9.81, 1000.0, 0.001
 TARGET = 0.05
 ENERGY_SCALE = RHO0 * G * H ** 3 / 2
 
 
-def series(path, cols=2):
-    rows = []
-    for line in open(path):
-        line = line.strip()
-        if line and not line.startswith("#"):
-            rows.append(tuple(float(v) for v in line.split()[:cols]))
-    return rows
+def series(path):
+    """(x, y) rows of a reference file (read_rows: '#' comments)"""
+    return [(r[0], r[1]) for r in read_rows(path)]
 
 
 def front(case):
@@ -122,23 +118,12 @@ def stability(case, dx):
     checks.append(("deepest wall penetration at any written time %.2f dx"
                    " < 0.5 dx" % (depth / dx), depth < 0.5 * dx))
     total = energy_total(case)
-    low, rise = total[0], 0.0
-    for e in total:
-        rise = max(rise, e - low)
-        low = min(low, e)
+    rise = largest_rise(total)
     checks.append(("total energy never rises above its lowest earlier value"
                    " by more than 1.5 %% of rho0 g H^3/2 = %.3f J/m (largest"
                    " rise %.3f %%)" % (ENERGY_SCALE, 100 * rise / ENERGY_SCALE),
                    rise <= 0.015 * ENERGY_SCALE))
     return checks, total
-
-
-def rise_of(total):
-    low, rise = total[0], 0.0
-    for e in total:
-        rise = max(rise, e - low)
-        low = min(low, e)
-    return rise
 
 
 def pressure_figures(case):
@@ -281,7 +266,7 @@ def main():
            "acoustic": cost["subSteps"]["water"]["mean"],
            "wall": cost["wall"], "threads": cost["threads"],
            "stable": int(stable), "energyLoss": total[0] - total[-1],
-           "energyRise": rise_of(total),
+           "energyRise": largest_rise(total),
            "noise": pres["noise"], "peak": pres["peak"]}
     runs_dir = os.path.join(here, "runs")
     save_run(runs_dir, "%s-%s-dx%g" % (correction, limiter, dx), run)

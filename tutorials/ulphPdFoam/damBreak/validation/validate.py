@@ -68,7 +68,8 @@ from foamCloud import read_field, read_positions, times  # noqa: E402
 from foamDict import lookup, read_dictionary  # noqa: E402
 from foamMonitor import (arguments, body_cost, interp,  # noqa: E402
                          pyplot, read_rows, result_suffix, wall_time)
-from fsiChecks import end_time, energy_total, verdict  # noqa: E402
+from fsiChecks import (end_time, energy_total, largest_rise,  # noqa: E402
+                       verdict)
 
 H = 0.057
 G = 9.81
@@ -150,12 +151,7 @@ def energy_rise(case):
     value [J/m]; None without the monitor"""
     if not os.path.isdir(os.path.join(case, "postProcessing", "energy")):
         return None
-    total = energy_total(case)
-    low, rise = math.inf, 0.0
-    for e in total:
-        low = min(low, e)
-        rise = max(rise, e - low)
-    return rise
+    return largest_rise(energy_total(case))
 
 
 def against_vof(errors, vof_at):
