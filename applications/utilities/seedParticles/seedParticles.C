@@ -20,6 +20,13 @@ Description
     (see seedLattice): bodies of one spacing and offset line up, so the wall
     layers continue the fluid's lattice across the wall.
 
+    A body seeded in a region may ask for a 'relaxation' (see
+    particleRelaxation): a random shift, then iterations that even out its
+    kernel sums among the other bodies' particles (fixed) and within its
+    region, across the scene's periodic directions (the 'periodic' entry of
+    constant/particleProperties). A flow that stretches a lattice (a
+    Taylor-Green vortex) starts from relaxed particles.
+
     All bodies are seeded before anything is written: a bad body leaves
     nothing on disk.
 
@@ -49,6 +56,9 @@ Usage
             //     regions ( { type mesh; } { type box; min (..); max (..); } );
             // }
             // ...or any other closed searchable surface type
+
+            // relaxation { iterations 300; }  // optional: see
+            //                                  // particleRelaxation
         }
 
         // Wall particles: 'patches' and 'layers' instead of 'region'
@@ -77,6 +87,8 @@ See also
 #include "seedLattice.H"
 #include "seedRegion.H"
 #include "wallLayers.H"
+#include "particleRelaxation.H"
+#include "readPeriodicBox.H"
 #include <memory>
 #include <vector>
 
@@ -144,6 +156,13 @@ void checkBodyKind(const word& body, const dictionary& dict)
             << " with 'layers' (wall particles behind patches)"
             << exit(FatalIOError);
     }
+    if (!region && dict.found("relaxation"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Body " << body << ": entry 'relaxation' belongs to bodies"
+            << " seeded in a region: expected wall layers ('patches') to keep"
+            << " their lattice" << exit(FatalIOError);
+    }
     if (region && dict.found("layers"))
     {
         FatalIOErrorInFunction(dict)
@@ -151,6 +170,92 @@ void checkBodyKind(const word& body, const dictionary& dict)
             << " expected 'patches' instead of 'region' with it"
             << exit(FatalIOError);
     }
+}
+
+//- The scene's periodic directions (constant/particleProperties' 'periodic'
+//  entry), none when the file is absent
+periodicBox scenePeriodic(const Time& runTime, const polyMesh& mesh)
+{
+    IOobject io
+    (
+        "particleProperties",
+        runTime.constant(),
+        mesh,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE
+    );
+    if (!io.typeHeaderOk<IOdictionary>(true)) return periodicBox();
+    const IOdictionary scene(io);
+    return readPeriodicBox(scene, mesh.nSolutionD());
+}
+
+
+//- Relax the particles of body k among the other bodies' (fixed)
+void relaxBody
+(
+    const label k,
+    const dictionary& dict,
+    std::vector<std::unique_ptr<particleSet>>& sets,
+    const polyMesh& mesh,
+    const meshSearch& search,
+    const periodicBox& periodic,
+    const scalar zPlane
+)
+{
+    particleSet& set = *sets[k];
+    const label dim = set.dim();
+    const scalar dx = readPositive(dict, "spacing");
+    particleRelaxation relaxation(dict.subDict("relaxation"), dim, dx, periodic);
+
+    std::vector<double> x(set.positions().data(), set.positions().data() + size_t(set.size())*dim);
+    std::vector<double> xFixed;
+    std::vector<double> VFixed;
+    forAll(sets, o)
+    {
+        if (o == k) continue;
+        const particleSet& other = *sets[o];
+        const particleField& xo = other.positions();
+        const particleField& Vo = other.field("volume");
+        for (label i = 0; i < other.size(); ++i)
+        {
+            for (label d = 0; d < dim; ++d) xFixed.push_back(xo(i, d));
+            VFixed.push_back(Vo(i, 0));
+        }
+    }
+
+    const autoPtr<seedRegion> region
+    (
+        seedRegion::New(dict.subDict("region"), mesh)
+    );
+    pointField pts;
+    labelList cells;
+    boolList in;
+    auto inside = [&](const double* xt, const label n, std::vector<char>& ok)
+    {
+        pts.setSize(n);
+        cells.setSize(n);
+        forAll(pts, i)
+        {
+            point p(0, 0, zPlane);
+            for (label d = 0; d < dim; ++d) p[d] = xt[size_t(i)*dim + d];
+            pts[i] = p;
+            cells[i] = search.findCell(p);
+        }
+        region->inside(pts, cells, in);
+        for (label i = 0; i < n; ++i) ok[i] = cells[i] >= 0 && in[i];
+    };
+
+    const scalar V = set.field("volume")(0, 0);
+    relaxation.relax(x, V, xFixed, VFixed, inside);
+    std::copy(x.begin(), x.end(), set.positions().data());
+
+    Info<< "Body " << set.name() << " relaxed" << nl
+        << "    iterations   " << relaxation.iterationsDone() << nl
+        << "    residual     " << relaxation.initialResidual() << " -> "
+        << relaxation.finalResidual()
+        << " (max h|Gamma|, Gamma = -2 sum grad W V)" << nl
+        << "    refused      " << relaxation.refused()
+        << " moves out of the region" << nl << endl;
 }
 
 } // End anonymous namespace
@@ -297,6 +402,25 @@ int main(int argc, char *argv[])
                 << max(distances) << nl;
         }
         Info<< endl;
+    }
+
+    // Relax the bodies that ask for it, in order, each among the others
+    {
+        label k = 0;
+        bool any = false;
+        for (const entry& e : bodiesDict) any = any || e.dict().found("relaxation");
+        const periodicBox periodic
+        (
+            any ? scenePeriodic(runTime, mesh) : periodicBox()
+        );
+        for (const entry& e : bodiesDict)
+        {
+            if (e.dict().found("relaxation"))
+            {
+                relaxBody(k, e.dict(), sets, mesh, search, periodic, zPlane);
+            }
+            ++k;
+        }
     }
 
     for (const auto& set : sets)

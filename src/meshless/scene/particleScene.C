@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "particleScene.H"
+#include "readPeriodicBox.H"
 #include "bodyModel.H"
 #include "solidModel.H"
 #include "lagrangianIO.H"
@@ -124,52 +125,10 @@ Foam::meshless::particleScene::particleScene(const polyMesh& mesh)
 
 void Foam::meshless::particleScene::readPeriodic()
 {
+    const periodicBox box(readPeriodicBox(dict_, dim_));
+    if (!box.any()) return;
     const dictionary* pd = dict_.findDict("periodic");
-    if (!pd)
-    {
-        if (dict_.found("periodic"))
-        {
-            FatalIOErrorInFunction(dict_)
-                << "Entry 'periodic': expected a dictionary of directions,"
-                << " e.g. periodic { x (0 1); }" << exit(FatalIOError);
-        }
-        return;
-    }
-
     const wordList names(dim_ == 2 ? wordList{"x", "y"} : wordList{"x", "y", "z"});
-    periodicBox box;
-    for (const entry& e : *pd)
-    {
-        const word& key = e.keyword();
-        const label d = names.find(key);
-        if (d < 0)
-        {
-            FatalIOErrorInFunction(*pd)
-                << "Unknown periodic direction '" << key << "' in 'periodic'"
-                << " (" << dim_ << "D scene): expected one of " << names
-                << exit(FatalIOError);
-        }
-        scalarList bounds;
-        if (e.isStream())
-        {
-            ITstream& is = e.stream();
-            is >> bounds;
-        }
-        if (bounds.size() != 2)
-        {
-            FatalIOErrorInFunction(*pd)
-                << "Periodic direction '" << key << "': expected its bounds"
-                << " (min max) in m, e.g. " << key << " (0 1);"
-                << exit(FatalIOError);
-        }
-        if (!(bounds[1] > bounds[0]))
-        {
-            FatalIOErrorInFunction(*pd)
-                << "Periodic direction '" << key << "' (" << bounds[0] << " "
-                << bounds[1] << "): expected max > min" << exit(FatalIOError);
-        }
-        box.set(d, bounds[0], bounds[1]);
-    }
 
     // A particle must not see two images of the same neighbour
     for (const particleBody& b : bodies_)

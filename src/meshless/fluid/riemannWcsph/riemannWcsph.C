@@ -48,6 +48,14 @@ Foam::meshless::bodyModels::riemannWcsph::limiterTypeNames
 
 
 const Foam::Enum<bool>
+Foam::meshless::bodyModels::riemannWcsph::laplacianNames
+({
+    { true, "normalised" },
+    { false, "morris" },
+});
+
+
+const Foam::Enum<bool>
 Foam::meshless::bodyModels::riemannWcsph::wallPressureNames
 ({
     { true, "clipped" },
@@ -100,6 +108,10 @@ Foam::meshless::bodyModels::riemannWcsph::riemannWcsph
     clipWallPressure_
     (
         wallPressureNames.getOrDefault("wallPressure", dict, false)
+    ),
+    normaliseLaplacian_
+    (
+        laplacianNames.getOrDefault("viscousLaplacian", dict, false)
     ),
     summationNorm_(0),
     drho_(body.particles().addField("densityRate", particleField::kind::scalar)),
@@ -449,7 +461,7 @@ void Foam::meshless::bodyModels::riemannWcsph::advanceDim
             viscousTerm<Dim>
             {
                 src_.data(), U_.data(), rho_.data(), mu_, 0.01*h,
-                aPrior_.data()
+                normaliseLaplacian_, aPrior_.data()
             }
         );
     }
