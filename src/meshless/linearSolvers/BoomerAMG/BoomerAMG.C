@@ -1,0 +1,514 @@
+/*---------------------------------------------------------------------------*\
+  meshlessFoam: meshless fluid-structure interaction inside OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "BoomerAMG.H"
+#include "dictionaryChecks.H"
+#include "addToRunTimeSelectionTable.H"
+#include <mpi.h>
+#include <HYPRE.h>
+#include <HYPRE_IJ_mv.h>
+#include <HYPRE_parcsr_ls.h>
+#include <cstdlib>
+#include <type_traits>
+#include <vector>
+
+// The column indices and values go to hypre without a conversion
+static_assert
+(
+    std::is_same<Foam::label, HYPRE_BigInt>::value
+ && std::is_same<Foam::label, HYPRE_Int>::value
+ && std::is_same<double, HYPRE_Complex>::value,
+    "hypre's HYPRE_Int and HYPRE_BigInt must be OpenFOAM's label and"
+    " HYPRE_Complex double (Debian's libhypre-dev with WM_LABEL_SIZE=32)"
+);
+
+namespace Foam
+{
+namespace meshless
+{
+    defineTypeNameAndDebug(BoomerAMG, 0);
+    addToRunTimeSelectionTable(linearSolver, BoomerAMG, dictionary);
+}
+}
+
+
+const Foam::Enum<Foam::meshless::BoomerAMG::coarseningType>
+Foam::meshless::BoomerAMG::coarseningNames
+({
+    { coarseningType::HMIS, "HMIS" },
+    { coarseningType::PMIS, "PMIS" },
+    { coarseningType::Falgout, "Falgout" },
+});
+
+
+const Foam::Enum<Foam::meshless::BoomerAMG::relaxationType>
+Foam::meshless::BoomerAMG::relaxationNames
+({
+    { relaxationType::l1GaussSeidel, "l1GaussSeidel" },
+    { relaxationType::symmetricGaussSeidel, "symmetricGaussSeidel" },
+    { relaxationType::l1Jacobi, "l1Jacobi" },
+    { relaxationType::Chebyshev, "Chebyshev" },
+});
+
+
+const Foam::Enum<Foam::meshless::BoomerAMG::krylovType>
+Foam::meshless::BoomerAMG::krylovNames
+({
+    { krylovType::GMRES, "GMRES" },
+    { krylovType::BiCGSTAB, "BiCGSTAB" },
+});
+
+
+namespace
+{
+
+//- MPI_Finalize at exit, registered only when BoomerAMG started MPI
+void finaliseMpi()
+{
+    int finalised = 0;
+    MPI_Finalized(&finalised);
+    if (!finalised)
+    {
+        MPI_Finalize();
+    }
+}
+
+
+bool mpiFinalised()
+{
+    int finalised = 0;
+    MPI_Finalized(&finalised);
+    return finalised != 0;
+}
+
+
+//- MPI (unless OpenFOAM's -parallel started it) and hypre, once
+void initialiseHypre()
+{
+    static bool initialised = false;
+    if (initialised)
+    {
+        return;
+    }
+
+    int running = 0;
+    MPI_Initialized(&running);
+    if (!running)
+    {
+        if (mpiFinalised())
+        {
+            FatalErrorInFunction
+                << "MPI was finalised already: BoomerAMG cannot start it"
+                << " again" << Foam::exit(Foam::FatalError);
+        }
+        // Only the thread that calls hypre uses MPI
+        int provided = 0;
+        MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
+        std::atexit(finaliseMpi);
+    }
+    HYPRE_Init();
+    initialised = true;
+}
+
+
+//- An error of a hypre call other than non-convergence (the caller
+//  measures convergence) is a FatalError. hypre's error flag is global
+//  and sticky: cleared here.
+void check(const HYPRE_Int err, const char* call)
+{
+    if (err & ~HYPRE_ERROR_CONV)
+    {
+        char description[512] = {};
+        HYPRE_DescribeError(err, description);
+        HYPRE_ClearAllErrors();
+        FatalErrorInFunction
+            << "hypre's " << call << " failed (error " << err << "): "
+            << description << Foam::exit(Foam::FatalError);
+    }
+    HYPRE_ClearAllErrors();
+}
+
+
+//- hypre's ParCSR Krylov methods have the same calls under their names
+struct krylovMethod
+{
+    const char* name;
+    HYPRE_Int (*create)(MPI_Comm, HYPRE_Solver*);
+    HYPRE_Int (*destroy)(HYPRE_Solver);
+    HYPRE_Int (*setTol)(HYPRE_Solver, HYPRE_Real);
+    HYPRE_Int (*setMaxIter)(HYPRE_Solver, HYPRE_Int);
+    HYPRE_Int (*setPrecond)
+    (
+        HYPRE_Solver,
+        HYPRE_PtrToParSolverFcn,
+        HYPRE_PtrToParSolverFcn,
+        HYPRE_Solver
+    );
+    HYPRE_Int (*setup)
+    (
+        HYPRE_Solver,
+        HYPRE_ParCSRMatrix,
+        HYPRE_ParVector,
+        HYPRE_ParVector
+    );
+    HYPRE_Int (*solve)
+    (
+        HYPRE_Solver,
+        HYPRE_ParCSRMatrix,
+        HYPRE_ParVector,
+        HYPRE_ParVector
+    );
+    HYPRE_Int (*numIterations)(HYPRE_Solver, HYPRE_Int*);
+
+    //- Settings of this method only (restart: GMRES's Krylov space size)
+    void (*configure)(HYPRE_Solver, const HYPRE_Int restart);
+};
+
+
+const krylovMethod PCG
+{
+    "PCG",
+    HYPRE_ParCSRPCGCreate,
+    HYPRE_ParCSRPCGDestroy,
+    HYPRE_ParCSRPCGSetTol,
+    HYPRE_ParCSRPCGSetMaxIter,
+    HYPRE_ParCSRPCGSetPrecond,
+    HYPRE_ParCSRPCGSetup,
+    HYPRE_ParCSRPCGSolve,
+    HYPRE_ParCSRPCGGetNumIterations,
+    [](HYPRE_Solver s, const HYPRE_Int)
+    {
+        // Converged on ||r||_2/||b||_2 (hypre's default: the norm of the
+        // preconditioner)
+        HYPRE_ParCSRPCGSetTwoNorm(s, 1);
+    }
+};
+
+
+const krylovMethod GMRES
+{
+    "GMRES",
+    HYPRE_ParCSRGMRESCreate,
+    HYPRE_ParCSRGMRESDestroy,
+    HYPRE_ParCSRGMRESSetTol,
+    HYPRE_ParCSRGMRESSetMaxIter,
+    HYPRE_ParCSRGMRESSetPrecond,
+    HYPRE_ParCSRGMRESSetup,
+    HYPRE_ParCSRGMRESSolve,
+    HYPRE_ParCSRGMRESGetNumIterations,
+    [](HYPRE_Solver s, const HYPRE_Int restart)
+    {
+        HYPRE_ParCSRGMRESSetKDim(s, restart);
+    }
+};
+
+
+const krylovMethod BiCGSTAB
+{
+    "BiCGSTAB",
+    HYPRE_ParCSRBiCGSTABCreate,
+    HYPRE_ParCSRBiCGSTABDestroy,
+    HYPRE_ParCSRBiCGSTABSetTol,
+    HYPRE_ParCSRBiCGSTABSetMaxIter,
+    HYPRE_ParCSRBiCGSTABSetPrecond,
+    HYPRE_ParCSRBiCGSTABSetup,
+    HYPRE_ParCSRBiCGSTABSolve,
+    HYPRE_ParCSRBiCGSTABGetNumIterations,
+    [](HYPRE_Solver, const HYPRE_Int) {}
+};
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * hypreObjects  * * * * * * * * * * * * * * //
+
+struct Foam::meshless::BoomerAMG::hypreObjects
+{
+    //- Each process solves its own system (for now)
+    MPI_Comm comm = MPI_COMM_SELF;
+
+    //- The preconditioner, shared by the Krylov solvers
+    HYPRE_Solver amg = nullptr;
+
+    //- Krylov solvers, made when first needed: symmetric, non-symmetric,
+    //  and the size of the system each was made for
+    HYPRE_Solver krylov[2] = {nullptr, nullptr};
+    const krylovMethod* method[2] = {&PCG, &GMRES};
+    label krylovSize[2] = {-1, -1};
+
+    HYPRE_IJMatrix A = nullptr;
+    HYPRE_IJVector b = nullptr;
+    HYPRE_IJVector x = nullptr;
+    label vectorSize = -1;
+
+    HYPRE_ParCSRMatrix parA = nullptr;
+    HYPRE_ParVector parB = nullptr;
+    HYPRE_ParVector parX = nullptr;
+
+    //- 0 ... n - 1 and the entries of each row (grow only)
+    std::vector<HYPRE_BigInt> rows;
+    std::vector<HYPRE_Int> rowSizes;
+
+
+    hypreObjects() = default;
+    hypreObjects(const hypreObjects&) = delete;
+    void operator=(const hypreObjects&) = delete;
+
+    ~hypreObjects()
+    {
+        // At exit after MPI_Finalize hypre cannot free its objects: the
+        // process is ending anyway
+        if (mpiFinalised())
+        {
+            return;
+        }
+        for (label k = 0; k < 2; ++k)
+        {
+            if (krylov[k]) method[k]->destroy(krylov[k]);
+        }
+        if (amg) HYPRE_BoomerAMGDestroy(amg);
+        destroyMatrix();
+        destroyVectors();
+    }
+
+    void destroyMatrix()
+    {
+        if (A) HYPRE_IJMatrixDestroy(A);
+        A = nullptr;
+        parA = nullptr;
+    }
+
+    void destroyVectors()
+    {
+        if (b) HYPRE_IJVectorDestroy(b);
+        if (x) HYPRE_IJVectorDestroy(x);
+        b = x = nullptr;
+        parB = parX = nullptr;
+        vectorSize = -1;
+    }
+
+    //- The Krylov solver of a (non-)symmetric matrix of n rows, made when
+    //  first asked and again when n changed: hypre's GMRES and BiCGSTAB
+    //  allocate their work vectors at their first setup only (PCG at
+    //  every setup), of the size of that system
+    HYPRE_Solver solver
+    (
+        const bool symmetric,
+        const label n,
+        const scalar tolerance,
+        const label restart
+    )
+    {
+        const label k = symmetric ? 0 : 1;
+        if (krylov[k] && krylovSize[k] != n)
+        {
+            method[k]->destroy(krylov[k]);
+            krylov[k] = nullptr;
+        }
+        if (!krylov[k])
+        {
+            krylovSize[k] = n;
+            const krylovMethod& m = *method[k];
+            check(m.create(comm, &krylov[k]), m.name);
+            m.setTol(krylov[k], tolerance);
+            m.setPrecond
+            (
+                krylov[k], HYPRE_BoomerAMGSolve, HYPRE_BoomerAMGSetup, amg
+            );
+            m.configure(krylov[k], restart);
+            check(HYPRE_GetError(), m.name);
+        }
+        return krylov[k];
+    }
+
+    //- A new IJ matrix of A (its pattern changes every step)
+    void setMatrix(const sparseMatrix& M)
+    {
+        const label n = M.n();
+        const label* rowStart = M.rowStart();
+        if (label(rows.size()) < n)
+        {
+            const label old = label(rows.size());
+            rows.resize(n);
+            for (label i = old; i < n; ++i) rows[i] = i;
+        }
+        rowSizes.resize(n);
+        for (label i = 0; i < n; ++i)
+        {
+            rowSizes[i] = rowStart[i + 1] - rowStart[i];
+        }
+
+        destroyMatrix();
+        HYPRE_IJMatrixCreate(comm, 0, n - 1, 0, n - 1, &A);
+        HYPRE_IJMatrixSetObjectType(A, HYPRE_PARCSR);
+        HYPRE_IJMatrixSetRowSizes(A, rowSizes.data());
+        HYPRE_IJMatrixInitialize(A);
+        HYPRE_IJMatrixSetValues
+        (
+            A, n, rowSizes.data(), rows.data(), M.columns(), M.values()
+        );
+        HYPRE_IJMatrixAssemble(A);
+        void* object = nullptr;
+        HYPRE_IJMatrixGetObject(A, &object);
+        parA = static_cast<HYPRE_ParCSRMatrix>(object);
+        check(HYPRE_GetError(), "IJ matrix assembly");
+    }
+
+    //- One IJ vector: made when the size changed, else filled again
+    void setVector
+    (
+        HYPRE_IJVector& v,
+        HYPRE_ParVector& par,
+        const double* values,
+        const label n
+    )
+    {
+        if (!v)
+        {
+            HYPRE_IJVectorCreate(comm, 0, n - 1, &v);
+            HYPRE_IJVectorSetObjectType(v, HYPRE_PARCSR);
+        }
+        HYPRE_IJVectorInitialize(v);
+        HYPRE_IJVectorSetValues(v, n, rows.data(), values);
+        HYPRE_IJVectorAssemble(v);
+        void* object = nullptr;
+        HYPRE_IJVectorGetObject(v, &object);
+        par = static_cast<HYPRE_ParVector>(object);
+    }
+
+    void setVectors(const double* bValues, const double* xValues, label n)
+    {
+        if (n != vectorSize)
+        {
+            destroyVectors();
+            vectorSize = n;
+        }
+        setVector(b, parB, bValues, n);
+        setVector(x, parX, xValues, n);
+        check(HYPRE_GetError(), "IJ vector assembly");
+    }
+};
+
+
+// * * * * * * * * * * * * * * * * BoomerAMG  * * * * * * * * * * * * * * * //
+
+Foam::meshless::BoomerAMG::BoomerAMG(const dictionary& dict)
+:
+    linearSolver(dict),
+    strongThreshold_
+    (
+        dict.found("strongThreshold")
+      ? readInOpenRange(dict, "strongThreshold", 0, 1)
+      : 0.25
+    ),
+    coarsening_
+    (
+        readEnumOrDefault
+        (
+            dict, "coarsening", coarseningNames, coarseningType::HMIS
+        )
+    ),
+    relaxation_
+    (
+        readEnumOrDefault
+        (
+            dict, "relaxType", relaxationNames,
+            relaxationType::l1GaussSeidel
+        )
+    ),
+    nonSymmetricSolver_
+    (
+        readEnumOrDefault
+        (
+            dict, "nonSymmetricSolver", krylovNames, krylovType::GMRES
+        )
+    ),
+    restart_
+    (
+        dict.found("restart") ? readPositiveLabel(dict, "restart") : 30
+    ),
+    hypre_(new hypreObjects)
+{
+    initialiseHypre();
+
+    hypreObjects& h = *hypre_;
+    if (nonSymmetricSolver_ == krylovType::BiCGSTAB)
+    {
+        h.method[1] = &BiCGSTAB;
+    }
+
+    // One V-cycle as a preconditioner
+    check(HYPRE_BoomerAMGCreate(&h.amg), "BoomerAMGCreate");
+    HYPRE_BoomerAMGSetPrintLevel(h.amg, 0);
+    HYPRE_BoomerAMGSetTol(h.amg, 0);
+    HYPRE_BoomerAMGSetMaxIter(h.amg, 1);
+    HYPRE_BoomerAMGSetStrongThreshold(h.amg, strongThreshold_);
+    HYPRE_BoomerAMGSetCoarsenType(h.amg, HYPRE_Int(coarsening_));
+    switch (relaxation_)
+    {
+        case relaxationType::l1GaussSeidel:
+            HYPRE_BoomerAMGSetCycleRelaxType(h.amg, 13, 1);
+            HYPRE_BoomerAMGSetCycleRelaxType(h.amg, 14, 2);
+            break;
+        case relaxationType::symmetricGaussSeidel:
+            HYPRE_BoomerAMGSetRelaxType(h.amg, 6);
+            break;
+        case relaxationType::l1Jacobi:
+            HYPRE_BoomerAMGSetRelaxType(h.amg, 18);
+            break;
+        case relaxationType::Chebyshev:
+            HYPRE_BoomerAMGSetRelaxType(h.amg, 16);
+            break;
+    }
+    check(HYPRE_GetError(), "BoomerAMG settings");
+}
+
+
+Foam::meshless::BoomerAMG::~BoomerAMG()
+{}
+
+
+Foam::meshless::linearSolver::performance Foam::meshless::BoomerAMG::solve
+(
+    const sparseMatrix& A,
+    const double* b,
+    double* x
+)
+{
+    hypreObjects& h = *hypre_;
+    const label n = A.n();
+    const bool symmetric = A.symmetric();
+    const krylovMethod& method = *h.method[symmetric ? 0 : 1];
+    HYPRE_Solver solver = nullptr;
+
+    return run
+    (
+        A, b, x,
+        [&](const label maxIter)
+        {
+            if (!solver)
+            {
+                // Set up once a solve: the hierarchy of this matrix
+                HYPRE_ClearAllErrors();
+                solver = h.solver(symmetric, n, tolerance(), restart_);
+                h.setMatrix(A);
+                h.setVectors(b, x, n);
+                check
+                (
+                    method.setup(solver, h.parA, h.parB, h.parX),
+                    method.name
+                );
+            }
+            // Again from the x reached (h.x) when called again
+            method.setMaxIter(solver, maxIter);
+            check(method.solve(solver, h.parA, h.parB, h.parX), method.name);
+
+            HYPRE_Int iterations = 0;
+            method.numIterations(solver, &iterations);
+            HYPRE_IJVectorGetValues(h.x, n, h.rows.data(), x);
+            check(HYPRE_GetError(), method.name);
+            return label(iterations);
+        }
+    );
+}
