@@ -145,9 +145,14 @@ void Foam::meshless::fluidModel::connect(particleScene& scene)
         }
         hydrostaticStart();
     }
-    for (label i = 0; i < rho_.size(); ++i)
+    // A weakly compressible fluid's pressure follows from its density; an
+    // incompressible one keeps its own (hydrostatic, or a restart's)
+    if (soundSpeed() < GREAT)
     {
-        p_(i, 0) = pressureOf(rho_(i, 0));
+        for (label i = 0; i < rho_.size(); ++i)
+        {
+            p_(i, 0) = pressureOf(rho_(i, 0));
+        }
     }
 }
 
@@ -308,6 +313,7 @@ void Foam::meshless::fluidModel::hydrostaticStart()
     for (label i = 0; i < x.size(); ++i)
     {
         const scalar p = rho0_*mag(g_)*(top - height(i));
+        p_(i, 0) = p;
         rho_(i, 0) = densityOf(p);
         mass_(i, 0) = rho_(i, 0)*V0_(i, 0);
     }

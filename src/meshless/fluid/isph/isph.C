@@ -1,0 +1,399 @@
+/*---------------------------------------------------------------------------*\
+  meshlessFoam: meshless fluid-structure interaction inside OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "isph.H"
+#include "particleScene.H"
+#include "effect.H"
+#include "viscosity.H"
+#include "correctionMatrix.H"
+#include "dictionaryChecks.H"
+#include "addToRunTimeSelectionTable.H"
+#include "dispatchDim.H"
+#include "Pair.H"
+#include <algorithm>
+#include <cmath>
+
+namespace Foam
+{
+namespace meshless
+{
+namespace bodyModels
+{
+    defineTypeNameAndDebug(isph, 0);
+    addToRunTimeSelectionTable(bodyModel, isph, dictionary);
+    addModelRole(isph, fluid);
+}
+}
+}
+
+
+namespace
+{
+    //- The free-surface range (s0 s1) of div r: 0 < s0 < s1 <= dim
+    Foam::Pair<Foam::scalar> surfaceRange
+    (
+        const Foam::dictionary& dict,
+        const Foam::label dim
+    )
+    {
+        using namespace Foam;
+        Pair<scalar> s(0.7*dim, 0.8*dim);
+        if (!dict.found("freeSurfaceRange")) return s;
+        scalarList given;
+        ITstream& is = dict.lookup("freeSurfaceRange");
+        is >> given;
+        if
+        (
+            given.size() != 2 || !(given[0] > 0) || !(given[1] > given[0])
+         || given[1] > dim
+        )
+        {
+            FatalIOErrorInFunction(dict)
+                << "freeSurfaceRange " << given << ": expected (s0 s1) with"
+                << " 0 < s0 < s1 <= " << dim << " (div r of the free surface,"
+                << " e.g. (1.4 1.6) in 2D)" << exit(FatalIOError);
+        }
+        return Pair<scalar>(given[0], given[1]);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::meshless::bodyModels::isph::isph
+(
+    particleBody& body,
+    const dictionary& dict
+)
+:
+    fluidModel(body, dict),
+    surface0_(surfaceRange(dict, body.dim()).first()),
+    surface1_(surfaceRange(dict, body.dim()).second()),
+    solver_
+    (
+        linearSolver::New
+        (
+            dict.found("pressureSolver")
+          ? dict.subDict("pressureSolver")
+          : dictionary(IStringStream("solver CG;")())
+        )
+    ),
+    acc_(body.particles().addField("acceleration", particleField::kind::vector)),
+    B_(body.particles().addScratchField("B", particleField::kind::tensor)),
+    Ustar_(body.particles().addScratchField("Ustar", particleField::kind::vector)),
+    Uold_(body.particles().addScratchField("Uold", particleField::kind::vector)),
+    aPrior_(body.particles().addScratchField("aPrior", particleField::kind::vector)),
+    gradP_(body.particles().addScratchField("gradP", particleField::kind::vector)),
+    moment_(body.particles().addScratchField("laplacianMoment", particleField::kind::vector)),
+    divr_(body.particles().addScratchField("divr", particleField::kind::scalar)),
+    alpha_(body.particles().addScratchField("freeSurfaceWeight", particleField::kind::scalar)),
+    divU_(body.particles().addScratchField("divUstar", particleField::kind::scalar)),
+    rhs_(body.particles().addScratchField("poissonSource", particleField::kind::scalar)),
+    mu_(0),
+    viscosityEffect_(nullptr),
+    A_(),
+    last_(),
+    failure_(),
+    assemblyCost_(-1),
+    solveCost_(-1),
+    projectionCost_(-1)
+{
+    last_.converged = true;
+    last_.iterations = 0;
+    last_.initialResidual = 0;
+    last_.finalResidual = 0;
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::meshless::bodyModels::isph::connectModel(particleScene&)
+{
+    if (const auto* visc = findEffect<effects::viscosity>(body_))
+    {
+        mu_ = visc->mu();
+        viscosityEffect_ = visc;
+    }
+    own_->cache(neighbourRelation::kernelGradient);
+    for (boundary& b : boundaries_)
+    {
+        b.toGhosts->cache(neighbourRelation::kernelGradient);
+    }
+}
+
+
+void Foam::meshless::bodyModels::isph::setSources()
+{
+    src_.resize(1 + boundaries_.size());
+    viscSrc_.resize(1 + boundaries_.size());
+    src_[0] = isphEquations::sourceData{true, Ustar_.data(), nullptr, nullptr};
+    viscSrc_[0] = riemannEquations::sourceData
+    {
+        true, p_.data(), B_.data(), U_.data(), nullptr, nullptr, true,
+        false, nullptr
+    };
+    for (size_t k = 0; k < boundaries_.size(); ++k)
+    {
+        const ghostBoundary& g = *boundaries_[k].ghosts;
+        src_[k + 1] = isphEquations::sourceData
+        {
+            false, g.U(), g.accelerations(), g.p()
+        };
+        viscSrc_[k + 1] = riemannEquations::sourceData
+        {
+            false, nullptr, nullptr, g.U(), g.accelerations(), g.normals(),
+            g.slipNormals() == nullptr, false, nullptr
+        };
+    }
+}
+
+
+template<int Dim>
+void Foam::meshless::bodyModels::isph::advanceDim
+(
+    const scalar t,
+    const scalar dt,
+    costAccounting& costs
+)
+{
+    using namespace isphEquations;
+
+    if (assemblyCost_ < 0)
+    {
+        assemblyCost_ = costs.part(body_.name() + ".poissonAssembly");
+        solveCost_ = costs.part(body_.name() + ".pressureSolve");
+        projectionCost_ = costs.part(body_.name() + ".projection");
+    }
+
+    particleSet& set = body_.particles();
+    const label n = set.size();
+    const label nv = n*Dim;
+    const scalar h = body_.kernel().h();
+    double* x = set.positions().data();
+    double* U = U_.data();
+    double* Us = Ustar_.data();
+    double* U0 = Uold_.data();
+    double* a0 = aPrior_.data();
+
+    vectorD<Dim> g;
+    for (int d = 0; d < Dim; ++d) g[d] = g_[d];
+
+    // 0. The pressure gradient at x^n for the Laplacian's defect
+    //    correction (isphEquations.H)
+    {
+        costAccounting::scope timer(costs, assemblyCost_);
+        gather(n, ctx_.sources, correctionTerm<Dim>(src_.data(), B_.data()));
+        gather
+        (
+            n, ctx_.sources,
+            pressureGradientTerm<Dim>
+            {
+                src_.data(), p_.data(), B_.data(), g, rho0_, gradP_.data()
+            }
+        );
+    }
+
+    // 1. Prediction at x^n: effects (gravity, ...) and viscosity
+    aPrior_.fill(0);
+    body_.addEffectAccelerations(t, aPrior_, costs);
+    if (viscosityEffect_)
+    {
+        costAccounting::scope timer(costs, body_.costPart(*viscosityEffect_));
+        gather
+        (
+            n, ctx_.sources,
+            riemannEquations::viscousTerm<Dim>
+            {
+                viscSrc_.data(), U, rho_.data(), mu_, 0.01*h, true, a0
+            }
+        );
+    }
+    #pragma omp parallel for schedule(static)
+    for (label k = 0; k < nv; ++k)
+    {
+        U0[k] = U[k];
+        Us[k] = U[k] + dt*a0[k];
+        x[k] += dt*U[k];
+    }
+    moveBoundaries(t + dt);
+    updateGeometry();
+
+    // 2. At x*: correction, free surface, divergence, Poisson equation
+    {
+        costAccounting::scope timer(costs, assemblyCost_);
+        gather(n, ctx_.sources, correctionTerm<Dim>(src_.data(), B_.data()));
+        gather
+        (
+            n, ctx_.sources,
+            freeSurfaceTerm<Dim>
+            {
+                src_.data(), V_.data(), surface0_, surface1_, divr_.data(),
+                alpha_.data(), moment_.data()
+            }
+        );
+        gather
+        (
+            n, ctx_.sources,
+            divergenceTerm<Dim>{src_.data(), Us, B_.data(), dt*g, divU_.data()}
+        );
+        rhs_.fill(0);
+        gather
+        (
+            n, ctx_.sources,
+            wallHeadTerm<Dim>{src_.data(), V_.data(), g, rho0_, rhs_.data()}
+        );
+        {
+            const double* m = moment_.data();
+            const double* gp = gradP_.data();
+            double* R = rhs_.data();
+            #pragma omp parallel for schedule(static)
+            for (label i = 0; i < n; ++i)
+            {
+                double c = 0;
+                for (int d = 0; d < Dim; ++d) c += m[i*Dim + d]*gp[i*Dim + d];
+                R[i] -= c;
+            }
+        }
+        isphEquations::assemblePoisson<Dim>
+        (
+            *own_, V_.data(), alpha_.data(), divr_.data(), divU_.data(),
+            rho0_, dt, rhs_.data(), A_
+        );
+    }
+    if (debug)
+    {
+        double d0 = GREAT, d1 = -GREAT, r0 = GREAT, r1 = -GREAT;
+        label na = 0;
+        for (label i = 0; i < n; ++i)
+        {
+            d0 = std::min(d0, divr_(i, 0)); d1 = std::max(d1, divr_(i, 0));
+            r0 = std::min(r0, rhs_(i, 0)); r1 = std::max(r1, rhs_(i, 0));
+            if (alpha_(i, 0) > 0) ++na;
+        }
+        Info<< "isph: div r " << d0 << " .. " << d1 << ", " << na
+            << " unknowns, source " << r0 << " .. " << r1 << endl;
+    }
+    {
+        costAccounting::scope timer(costs, solveCost_);
+        last_ = solver_->solve(A_, rhs_.data(), p_.data());
+    }
+    Info<< "    " << body_.name() << ": pressure " << last_.solver << ", "
+        << last_.iterations << " iterations, residual "
+        << last_.initialResidual << " -> " << last_.finalResidual << endl;
+    if (!last_.converged)
+    {
+        OStringStream os;
+        os  << "the pressure Poisson equation did not converge: "
+            << last_.solver << " stopped after " << last_.iterations
+            << " iterations at residual " << last_.finalResidual
+            << " (relative), tolerance not reached (pressureSolver)";
+        failure_ = os.str();
+    }
+
+    // 3. Projection and positions
+    {
+        costAccounting::scope timer(costs, projectionCost_);
+        gather
+        (
+            n, ctx_.sources,
+            pressureGradientTerm<Dim>
+            {
+                src_.data(), p_.data(), B_.data(), g, rho0_, gradP_.data()
+            }
+        );
+        const double* gp = gradP_.data();
+        double* acc = acc_.data();
+        const double c = dt/rho0_;
+        #pragma omp parallel for schedule(static)
+        for (label k = 0; k < nv; ++k)
+        {
+            U[k] = Us[k] - c*gp[k];
+            x[k] += 0.5*dt*(U[k] - U0[k]);
+            acc[k] = (U[k] - U0[k])/dt;
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::meshless::bodyModels::isph::maxDeltaT
+(
+    const scalar maxCo
+) const
+{
+    const scalar h = body_.kernel().h();
+    const label n = U_.size();
+    const label dim = body_.dim();
+    const double* U = U_.data();
+    const double* a = acc_.data();
+    double u2 = 0, a2 = magSqr(g_);
+    for (label i = 0; i < n; ++i)
+    {
+        double ui = 0, ai = 0;
+        for (label d = 0; d < dim; ++d)
+        {
+            ui += U[i*dim + d]*U[i*dim + d];
+            ai += a[i*dim + d]*a[i*dim + d];
+        }
+        u2 = std::max(u2, ui);
+        a2 = std::max(a2, ai);
+    }
+    const scalar umax = std::sqrt(u2);
+    scalar dt = GREAT;
+    if (umax > 0)
+    {
+        dt = std::min(maxCo*h/umax, 0.5*skin_*body_.kernel().radius()/umax);
+    }
+    if (a2 > 0) dt = std::min(dt, 0.25*std::sqrt(h/std::sqrt(a2)));
+    if (mu_ > 0) dt = std::min(dt, 0.125*rho0_*h*h/mu_);
+    return dt;
+}
+
+
+void Foam::meshless::bodyModels::isph::advance
+(
+    const scalar t,
+    const scalar dt,
+    costAccounting& costs
+)
+{
+    emptied_ = -1;
+    failure_.clear();
+
+    // Incompressible: rho = rho0, V = m/rho0 throughout
+    {
+        const label n = rho_.size();
+        const double* m = mass_.data();
+        double* rho = rho_.data();
+        double* V = V_.data();
+        for (label i = 0; i < n; ++i)
+        {
+            rho[i] = rho0_;
+            V[i] = m[i]/rho0_;
+        }
+    }
+    moveBoundaries(t);
+    setSources();
+
+    // The walls' pressure from the water at the step's start: which wall
+    // particles it covers (isphEquations::dry); water without pressure (a
+    // start from rest) covers them all for this step
+    interpolateBoundaries();
+    if (p_.maxMagnitude() == 0)
+    {
+        for (size_t k = 1; k < src_.size(); ++k) src_[k].pWall = nullptr;
+    }
+    dispatchDim(body_.dim(), [&](auto d) { advanceDim<d>(t, dt, costs); });
+}
+
+
+Foam::string Foam::meshless::bodyModels::isph::blowUp() const
+{
+    if (!failure_.empty()) return failure_;
+    return fluidModel::blowUp();
+}
+
+
+// ************************************************************************* //
