@@ -19,7 +19,10 @@ Description
         pressure k (R^2 - r^2) within 1.5 % of its largest value in the
         interior (0.7 % measured; R the rim particles' mean radius: the
         Dirichlet condition sits on the surface particles, not half a
-        spacing beyond them).
+        spacing beyond them);
+      - particle shifting's R_i vanishes (1e-12 of a spacing) at interior
+        lattice particles and points away from a neighbour a particle was
+        moved towards.
 
 \*---------------------------------------------------------------------------*/
 
@@ -85,7 +88,7 @@ struct cloud
 
     void surface(std::vector<double>& divr, std::vector<double>& alpha)
     {
-        const sourceData fluid{true, nullptr, nullptr, nullptr};
+        const sourceData fluid{true, nullptr, nullptr, nullptr, nullptr};
         const std::vector<double> V(n, std::pow(dx, Dim));
         moment.assign(n*Dim, 0);
         divr.assign(n, 0);
@@ -121,7 +124,7 @@ void expectLinearExact()
             U[i*Dim + d] = a[d]*c.x(i, d) + 0.7*c.x(i, (d + 1) % Dim);
         }
     }
-    const sourceData src{true, U.data(), nullptr, nullptr};
+    const sourceData src{true, U.data(), nullptr, nullptr, nullptr};
     std::vector<double> div(c.n), gp(c.n*Dim);
     gather
     (
@@ -314,3 +317,34 @@ TEST(isphEquations, poissonOfADiscRecoversTheParabola)
 }
 
 // ************************************************************************* //
+
+
+TEST(isphEquations, shiftingPushesApartCloseParticles)
+{
+    const double dx = 0.01;
+    const label side = 12;
+    std::vector<double> pts = meshlessTest::latticePoints(2, side, dx);
+    // Particle k (row 6, column 6) moved 0.3 dx towards its +x neighbour
+    const label k = 6*side + 6;
+    pts[2*k] += 0.3*dx;
+    cloud<2> c(pts, dx);
+    const std::vector<double> B = c.B();
+    std::vector<double> U(c.n*2, 0.0), R(c.n*2), gPsi(c.n*2), gU(c.n*4);
+    const sourceData fluid{true, U.data(), nullptr, nullptr, nullptr};
+    gather
+    (
+        c.n, c.sources,
+        shiftTerm<2>
+        {
+            &fluid, U.data(), B.data(), c.W->radius(), R.data(), gPsi.data(),
+            gU.data()
+        }
+    );
+    // k pushed back (-x), its +x neighbour pushed on (+x)
+    EXPECT_LT(R[2*k], -0.1);
+    EXPECT_NEAR(R[2*k + 1], 0, 1e-12);
+    EXPECT_GT(R[2*(k + 1)], 0.1);
+    // An interior particle out of k's reach: R = 0
+    const label far = 3*side + 2 + 1;
+    EXPECT_LT(std::hypot(R[2*far], R[2*far + 1]), 1e-12);
+}

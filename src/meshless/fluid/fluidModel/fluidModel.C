@@ -79,7 +79,9 @@ void Foam::meshless::fluidModel::connect(particleScene& scene)
         g_ = grav->value();
     }
 
-    if (dict_.found("minPressure"))
+    // An incompressible fluid's density does not follow its pressure: it
+    // takes minPressure as a floor of its own (isph)
+    if (dict_.found("minPressure") && soundSpeed() < GREAT)
     {
         // The pressure of an empty particle bounds the equation of state
         const scalar pMin = dict_.get<scalar>("minPressure");

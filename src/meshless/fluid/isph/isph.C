@@ -6,6 +6,7 @@
 #include "particleScene.H"
 #include "effect.H"
 #include "viscosity.H"
+#include "particleShifting.H"
 #include "correctionMatrix.H"
 #include "dictionaryChecks.H"
 #include "addToRunTimeSelectionTable.H"
@@ -70,6 +71,8 @@ Foam::meshless::bodyModels::isph::isph
     fluidModel(body, dict),
     surface0_(surfaceRange(dict, body.dim()).first()),
     surface1_(surfaceRange(dict, body.dim()).second()),
+    clipPressure_(dict.found("minPressure")),
+    minPressure_(dict.getOrDefault<scalar>("minPressure", 0)),
     solver_
     (
         linearSolver::New
@@ -90,8 +93,12 @@ Foam::meshless::bodyModels::isph::isph
     alpha_(body.particles().addScratchField("freeSurfaceWeight", particleField::kind::scalar)),
     divU_(body.particles().addScratchField("divUstar", particleField::kind::scalar)),
     rhs_(body.particles().addScratchField("poissonSource", particleField::kind::scalar)),
+    shiftR_(body.particles().addScratchField("shiftR", particleField::kind::vector)),
+    gradPsi_(body.particles().addScratchField("gradPsi", particleField::kind::vector)),
+    gradU_(body.particles().addScratchField("gradU", particleField::kind::tensor)),
     mu_(0),
     viscosityEffect_(nullptr),
+    shifting_(nullptr),
     A_(),
     last_(),
     failure_(),
@@ -115,6 +122,7 @@ void Foam::meshless::bodyModels::isph::connectModel(particleScene&)
         mu_ = visc->mu();
         viscosityEffect_ = visc;
     }
+    shifting_ = findEffect<effects::particleShifting>(body_);
     own_->cache(neighbourRelation::kernelGradient);
     for (boundary& b : boundaries_)
     {
@@ -127,7 +135,10 @@ void Foam::meshless::bodyModels::isph::setSources()
 {
     src_.resize(1 + boundaries_.size());
     viscSrc_.resize(1 + boundaries_.size());
-    src_[0] = isphEquations::sourceData{true, Ustar_.data(), nullptr, nullptr};
+    src_[0] = isphEquations::sourceData
+    {
+        true, Ustar_.data(), nullptr, nullptr, nullptr
+    };
     viscSrc_[0] = riemannEquations::sourceData
     {
         true, p_.data(), B_.data(), U_.data(), nullptr, nullptr, true,
@@ -138,13 +149,93 @@ void Foam::meshless::bodyModels::isph::setSources()
         const ghostBoundary& g = *boundaries_[k].ghosts;
         src_[k + 1] = isphEquations::sourceData
         {
-            false, g.U(), g.accelerations(), g.p()
+            false, g.U(), g.accelerations(), g.p(), g.normals()
         };
         viscSrc_[k + 1] = riemannEquations::sourceData
         {
             false, nullptr, nullptr, g.U(), g.accelerations(), g.normals(),
             g.slipNormals() == nullptr, false, nullptr
         };
+    }
+}
+
+
+template<int Dim>
+void Foam::meshless::bodyModels::isph::shift
+(
+    const scalar dt,
+    costAccounting& costs
+)
+{
+    using namespace isphEquations;
+    costAccounting::scope timer(costs, body_.costPart(*shifting_));
+
+    const label n = U_.size();
+    const scalar h = body_.kernel().h();
+    vectorD<Dim> g;
+    for (int d = 0; d < Dim; ++d) g[d] = g_[d];
+
+    // At the step's end (the lists hold with the skin)
+    updateGeometry();
+    gather(n, ctx_.sources, correctionTerm<Dim>(src_.data(), B_.data()));
+    gather
+    (
+        n, ctx_.sources,
+        shiftTerm<Dim>
+        {
+            src_.data(), U_.data(), B_.data(), body_.kernel().radius(),
+            shiftR_.data(), gradPsi_.data(), gradU_.data()
+        }
+    );
+    gather
+    (
+        n, ctx_.sources,
+        pressureGradientTerm<Dim>
+        {
+            src_.data(), p_.data(), B_.data(), g, rho0_, gradP_.data()
+        }
+    );
+
+    const scalar zeta = U_.maxMagnitude()*dt;
+    const scalar c = shifting_->coefficient()*zeta;
+    const scalar cap = shifting_->maxShift()*h;
+    const bool correctU = shifting_->correctVelocity();
+    const neighbourRelation& rel = *own_;
+    const label* off = rel.offsetData();
+    const label* idx = rel.indexData();
+    const double* r = rel.r();
+    const double* alpha = alpha_.data();
+    double* x = body_.particles().positions().data();
+    double* U = U_.data();
+    double* p = p_.data();
+
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < n; ++i)
+    {
+        vectorD<Dim> dr = c*cvec<Dim>(shiftR_.data(), i);
+        const double mag = dr.norm();
+        if (mag > cap) dr *= cap/mag;
+
+        // On or within h of the free surface: along the surface only
+        bool surface = alpha[i] < 1;
+        for (label q = off[i]; q < off[i + 1] && !surface; ++q)
+        {
+            surface = r[q] < h && alpha[idx[q]] < 1;
+        }
+        if (surface)
+        {
+            const vectorD<Dim> gp = cvec<Dim>(gradPsi_.data(), i);
+            const double gm = gp.norm();
+            if (gm > 0)
+            {
+                const vectorD<Dim> nrm = -gp/gm;
+                dr -= dr.dot(nrm)*nrm;
+            }
+        }
+
+        if (correctU) vec<Dim>(U, i) += ctens<Dim>(gradU_.data(), i)*dr;
+        p[i] += cvec<Dim>(gradP_.data(), i).dot(dr);
+        vec<Dim>(x, i) += dr;
     }
 }
 
@@ -197,6 +288,7 @@ void Foam::meshless::bodyModels::isph::advanceDim
     // 1. Prediction at x^n: effects (gravity, ...) and viscosity
     aPrior_.fill(0);
     body_.addEffectAccelerations(t, aPrior_, costs);
+    body_.addPairEffectAccelerations(ctx_, aPrior_, costs);
     if (viscosityEffect_)
     {
         costAccounting::scope timer(costs, body_.costPart(*viscosityEffect_));
@@ -271,12 +363,41 @@ void Foam::meshless::bodyModels::isph::advanceDim
             r0 = std::min(r0, rhs_(i, 0)); r1 = std::max(r1, rhs_(i, 0));
             if (alpha_(i, 0) > 0) ++na;
         }
+        double asym = 0, dmin = GREAT, rmax = 0;
+        const label* st = A_.rowStart();
+        const label* cl = A_.columns();
+        const double* va = A_.values();
+        for (label i = 0; i < n; ++i)
+        {
+            dmin = std::min(dmin, va[st[i]]);
+            double off = 0;
+            for (label q = st[i] + 1; q < st[i + 1]; ++q)
+            {
+                off += std::abs(va[q]);
+                const label j = cl[q];
+                for (label m = st[j] + 1; m < st[j + 1]; ++m)
+                {
+                    if (cl[m] == i) asym = std::max(asym, std::abs(va[m] - va[q]));
+                }
+            }
+            rmax = std::max(rmax, off/va[st[i]]);
+        }
+        Info<< "isph: matrix asymmetry " << asym << ", smallest diagonal "
+            << dmin << ", largest off/diag " << rmax << endl;
         Info<< "isph: div r " << d0 << " .. " << d1 << ", " << na
             << " unknowns, source " << r0 << " .. " << r1 << endl;
     }
     {
         costAccounting::scope timer(costs, solveCost_);
         last_ = solver_->solve(A_, rhs_.data(), p_.data());
+    }
+
+    if (clipPressure_)
+    {
+        double* pp = p_.data();
+        const double floor = minPressure_;
+        #pragma omp parallel for schedule(static)
+        for (label i = 0; i < n; ++i) pp[i] = std::max(pp[i], floor);
     }
     Info<< "    " << body_.name() << ": pressure " << last_.solver << ", "
         << last_.iterations << " iterations, residual "
@@ -313,6 +434,7 @@ void Foam::meshless::bodyModels::isph::advanceDim
             acc[k] = (U[k] - U0[k])/dt;
         }
     }
+    if (shifting_) shift<Dim>(dt, costs);
 }
 
 

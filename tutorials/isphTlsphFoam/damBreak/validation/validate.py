@@ -1,0 +1,207 @@
+#!/usr/bin/python3
+"""Dam break of the projection ISPH fluid (isphTlsphFoam, model isph): the
+surge front against the converged Navier-Stokes front without surface
+tension, up to the impact on the far wall.
+
+    validate.py <case> [--check]
+
+Front: the largest x of the water particles at each written time,
+T = t sqrt(g/H). Reference (pass/fail): the front of interFoam without
+surface tension (benchmarks/damBreakVof, the finest run;
+interFoamFrontNoSurfaceTension.dat) at the times of the Martin & Moyce
+experiment up to the run's end (0.17 s, T = 2.23, before the front reaches
+the far wall): RMS of the differences below 0.05 H. The experiment
+(martinMoyce1952.dat) is reported beside it (the team's dam-break
+decision).
+
+Stability (pass/fail): the run reached endTime; the water keeps its
+particles; no particle deeper than dx/2 into a wall; the total energy
+(kinetic + potential) never rises above its lowest earlier value by more
+than 2.5 % of rho0 g H^3/2: a guard against a blow-up, not a goal (1.8 %
+measured at H/dx = 28.5: the particle shifting and the pressure floor
+do not conserve energy; the ULPH fluid keeps 0.5 %).
+
+The impact itself is not yet part of the tutorial: the run blows up at
+t = 0.18-0.24 s when the front hits the far wall (README).
+
+Writes validation/result<suffix>.md and front<suffix>.png and keeps the
+run's figures in validation/runs/. With --check, exits 1 when a check
+fails.
+"""
+import math
+import os
+import sys
+
+here = os.path.dirname(os.path.abspath(__file__))
+project = os.environ.get("MESHLESS_PROJECT") or os.path.abspath(
+    os.path.join(here, "..", "..", "..", ".."))
+sys.path.insert(0, os.path.join(project, "etc", "python"))
+from foamCloud import read_positions, times  # noqa: E402
+from foamDict import dictionary_entry  # noqa: E402
+from foamMonitor import (arguments, case_spacing, interp, load_runs,  # noqa
+                         pyplot, read_rows, result_suffix, run_cost,
+                         save_run, wall_time)
+from fsiChecks import energy_total, largest_rise  # noqa: E402
+
+H, G, RHO0, DX0 = 0.057, 9.81, 1000.0, 0.002
+TARGET = 0.05
+ENERGY_SCALE = RHO0 * G * H ** 3 / 2
+
+
+def series(path):
+    """(x, y) rows of a reference file (read_rows: '#' comments)"""
+    return [(r[0], r[1]) for r in read_rows(path)]
+
+
+def front(case):
+    ts, xs = [], []
+    for t, name in times(case):
+        x = read_positions(case, name, "water")
+        ts.append(t * math.sqrt(G / H))
+        xs.append(max(p[0] for p in x) / H)
+    return ts, xs
+
+
+def front_errors(ts, xs):
+    """[(T, experiment, reference, simulated)] at the experiment's times
+    before the reference front reaches the far wall"""
+    ref = series(os.path.join(here, "interFoamFrontNoSurfaceTension.dat"))
+    exp = series(os.path.join(here, "martinMoyce1952.dat"))
+    rT, rX = [a for a, _ in ref], [b for _, b in ref]
+    rows = []
+    for T, xe in exp:
+        if T > ts[-1]:
+            continue
+        xr = interp(T, rT, rX)
+        if xr >= 4 - 1e-3:
+            continue
+        rows.append((T, xe, xr, interp(T, ts, xs)))
+    return rows
+
+
+def rms(values):
+    return math.sqrt(sum(v * v for v in values) / len(values))
+
+
+def stability(case, dx):
+    checks = []
+    series_ = times(case)
+    t1 = series_[-1][0]
+    end = float(dictionary_entry(case, "endTime", "system/controlDict"))
+    checks.append(("ran to endTime %g s (last time %g s)" % (end, t1),
+                   abs(t1 - end) < 1e-9))
+    n0 = len(read_positions(case, series_[0][1], "water"))
+    lost, depth = None, 0.0
+    for value, name in series_:
+        x = read_positions(case, name, "water")
+        if len(x) != n0:
+            lost = value
+            break
+        depth = max(depth, max(max(-p[0], p[0] - 4 * H, -p[1]) for p in x))
+    checks.append(("the water keeps its %d particles at all %d written"
+                   " times%s" % (n0, len(series_), "" if lost is None
+                                 else ": lost at %g s" % lost), lost is None))
+    checks.append(("deepest wall penetration at any written time %.2f dx"
+                   " < 0.5 dx" % (depth / dx), depth < 0.5 * dx))
+    total = energy_total(case)
+    rise = largest_rise(total)
+    checks.append(("total energy never rises above its lowest earlier value"
+                   " by more than 2.5 %% of rho0 g H^3/2 = %.3f J/m (largest"
+                   " rise %.3f %%)" % (ENERGY_SCALE, 100 * rise / ENERGY_SCALE),
+                   rise <= 0.025 * ENERGY_SCALE))
+    return checks, total
+
+
+def plot(suffix, ts, xs, label):
+    plt = pyplot()
+    if plt is None:
+        return
+    ref = series(os.path.join(here, "interFoamFrontNoSurfaceTension.dat"))
+    exp = series(os.path.join(here, "martinMoyce1952.dat"))
+    fig, ax = plt.subplots(figsize=(6, 4))
+    ax.plot([a for a, _ in ref], [b for _, b in ref], "k-",
+            label="interFoam, no surface tension (reference)")
+    ax.plot([a for a, _ in exp], [b for _, b in exp], "ko",
+            label="Martin & Moyce 1952 (reported)")
+    ax.plot(ts, xs, "r-", label=label)
+    ax.set_xlabel("T = t sqrt(g/H)")
+    ax.set_ylabel("x_front / H")
+    ax.set_xlim(0, 3)
+    ax.set_ylim(1, 4.1)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(here, "front%s.png" % suffix), dpi=110)
+    plt.close(fig)
+
+
+def main():
+    case, check = arguments(__doc__)
+    dx = case_spacing(case, DX0)
+    suffix = result_suffix(dx, DX0)
+    ts, xs = front(case)
+    rows = front_errors(ts, xs)
+    err = rms([r[3] - r[2] for r in rows])
+    err_exp = rms([r[3] - r[1] for r in rows])
+    checks, total = stability(case, dx)
+    cost = run_cost(case)
+    front_ok = err < TARGET
+    stable = all(ok for _, ok in checks)
+    verdict = lambda ok: "met" if ok else "MISSED"  # noqa: E731
+
+    lines = [
+        "# Dam break, projection ISPH (isphTlsphFoam): front against the"
+        " Navier-Stokes reference up to the impact", "",
+        "Command: `tutorials/isphTlsphFoam/damBreak/Allrun%s`"
+        % ("" if not suffix else " -dx %g" % dx), "",
+        "Set-up: square column L = H = 0.057 m, tank 4H, ghost no-slip walls"
+        " (4 layers), cubic spline h = 1.2 dx, constant density, the"
+        " pressure Poisson equation by CG each step, free surface by div r,"
+        " minPressure 0, particle shifting (C = 0.1), wall repulsion, maxCo"
+        " 0.1, hydrostatic start, to 0.17 s (T = 2.23, before the impact).",
+        "",
+        "| H/dx | water particles | steps | wall time | RMS front vs"
+        " Navier-Stokes | target | RMS vs Martin & Moyce (reported) |",
+        "|---|---|---|---|---|---|---|",
+        "| %.1f | %d | %d | %s | %.4f H | < %.2f H: %s | %.4f H |"
+        % (H / dx, cost["bodies"]["water"]["particles"], cost["steps"],
+           wall_time(cost), err, TARGET, verdict(front_ok), err_exp),
+        "", "Stability:", ""]
+    lines += ["- %s: %s" % (what, verdict(ok)) for what, ok in checks]
+    lines += ["",
+              "| T | experiment x/H | interFoam x/H | isphTlsphFoam x/H |"
+              " difference from interFoam |",
+              "|---|---|---|---|---|"]
+    lines += ["| %.3f | %.3f | %.3f | %.3f | %+.3f |"
+              % (T, xe, xr, xm, xm - xr) for T, xe, xr, xm in rows]
+    lines += ["", "Plot: front%s.png." % suffix]
+
+    run = {"dx": dx, "rms": err, "rmsExp": err_exp,
+           "particles": cost["bodies"]["water"]["particles"],
+           "steps": cost["steps"], "wall": cost["wall"],
+           "threads": cost["threads"], "stable": int(stable),
+           "energyRise": largest_rise(total)}
+    runs_dir = os.path.join(here, "runs")
+    save_run(runs_dir, "dx%g" % dx, run)
+    series_ = sorted(load_runs(runs_dir), key=lambda r: -r["dx"])
+    if len(series_) > 1:
+        lines += ["", "Convergence (runs kept in validation/runs):", "",
+                  "| H/dx | RMS front vs Navier-Stokes | wall time |",
+                  "|---|---|---|"]
+        lines += ["| %.1f | %.4f H | %.0f s on %d threads |"
+                  % (H / r["dx"], r["rms"], r["wall"], r["threads"])
+                  for r in series_]
+    with open(os.path.join(here, "result%s.md" % suffix), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    plot(suffix, ts, xs, "isphTlsphFoam, H/dx = %.1f" % (H / dx))
+
+    print("dam break (ISPH): RMS front vs Navier-Stokes %.4f H (target"
+          " < %.2f H %s), vs Martin & Moyce %.4f H (reported); stability %s"
+          % (err, TARGET, verdict(front_ok), err_exp, verdict(stable)))
+    for what, ok in checks:
+        print("  %s: %s" % (verdict(ok), what))
+    if check and not (front_ok and stable):
+        sys.exit(1)
+
+
+if __name__ == "__main__":
+    main()
