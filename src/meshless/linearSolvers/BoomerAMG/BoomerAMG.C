@@ -52,6 +52,14 @@ Foam::meshless::BoomerAMG::relaxationNames
 });
 
 
+const Foam::Enum<Foam::meshless::BoomerAMG::interpolationType>
+Foam::meshless::BoomerAMG::interpolationNames
+({
+    { interpolationType::classical, "classical" },
+    { interpolationType::extendedI, "extendedI" },
+});
+
+
 const Foam::Enum<Foam::meshless::BoomerAMG::krylovType>
 Foam::meshless::BoomerAMG::krylovNames
 ({
@@ -417,6 +425,20 @@ Foam::meshless::BoomerAMG::BoomerAMG(const dictionary& dict)
             relaxationType::l1GaussSeidel
         )
     ),
+    interpolation_
+    (
+        readEnumOrDefault
+        (
+            dict, "interpolation", interpolationNames,
+            interpolationType::classical
+        )
+    ),
+    aggressiveLevels_
+    (
+        dict.found("aggressiveLevels")
+      ? readLabelInRange(dict, "aggressiveLevels", 0, 10)
+      : 0
+    ),
     nonSymmetricSolver_
     (
         readEnumOrDefault
@@ -461,6 +483,8 @@ Foam::meshless::BoomerAMG::BoomerAMG(const dictionary& dict)
             HYPRE_BoomerAMGSetRelaxType(h.amg, 16);
             break;
     }
+    HYPRE_BoomerAMGSetInterpType(h.amg, HYPRE_Int(interpolation_));
+    HYPRE_BoomerAMGSetAggNumLevels(h.amg, HYPRE_Int(aggressiveLevels_));
     check(HYPRE_GetError(), "BoomerAMG settings");
 }
 
