@@ -69,8 +69,7 @@ Foam::meshless::bodyModels::isph::isph
 )
 :
     fluidModel(body, dict),
-    surface0_(surfaceRange(dict, body.dim()).first()),
-    surface1_(surfaceRange(dict, body.dim()).second()),
+    surface_(surfaceRange(dict, body.dim())),
     clipPressure_(dict.found("minPressure")),
     minPressure_(dict.getOrDefault<scalar>("minPressure", 0)),
     solver_
@@ -320,7 +319,8 @@ void Foam::meshless::bodyModels::isph::advanceDim
             n, ctx_.sources,
             freeSurfaceTerm<Dim>
             {
-                src_.data(), V_.data(), surface0_, surface1_, divr_.data(),
+                src_.data(), V_.data(), surface_.first(), surface_.second(),
+                divr_.data(),
                 alpha_.data(), moment_.data()
             }
         );
@@ -352,40 +352,6 @@ void Foam::meshless::bodyModels::isph::advanceDim
             *own_, V_.data(), alpha_.data(), divr_.data(), divU_.data(),
             rho0_, dt, rhs_.data(), A_
         );
-    }
-    if (debug)
-    {
-        double d0 = GREAT, d1 = -GREAT, r0 = GREAT, r1 = -GREAT;
-        label na = 0;
-        for (label i = 0; i < n; ++i)
-        {
-            d0 = std::min(d0, divr_(i, 0)); d1 = std::max(d1, divr_(i, 0));
-            r0 = std::min(r0, rhs_(i, 0)); r1 = std::max(r1, rhs_(i, 0));
-            if (alpha_(i, 0) > 0) ++na;
-        }
-        double asym = 0, dmin = GREAT, rmax = 0;
-        const label* st = A_.rowStart();
-        const label* cl = A_.columns();
-        const double* va = A_.values();
-        for (label i = 0; i < n; ++i)
-        {
-            dmin = std::min(dmin, va[st[i]]);
-            double off = 0;
-            for (label q = st[i] + 1; q < st[i + 1]; ++q)
-            {
-                off += std::abs(va[q]);
-                const label j = cl[q];
-                for (label m = st[j] + 1; m < st[j + 1]; ++m)
-                {
-                    if (cl[m] == i) asym = std::max(asym, std::abs(va[m] - va[q]));
-                }
-            }
-            rmax = std::max(rmax, off/va[st[i]]);
-        }
-        Info<< "isph: matrix asymmetry " << asym << ", smallest diagonal "
-            << dmin << ", largest off/diag " << rmax << endl;
-        Info<< "isph: div r " << d0 << " .. " << d1 << ", " << na
-            << " unknowns, source " << r0 << " .. " << r1 << endl;
     }
     {
         costAccounting::scope timer(costs, solveCost_);
