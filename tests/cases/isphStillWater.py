@@ -130,6 +130,30 @@ def solvers(t, work):
                     diff < 1e-6 * RHO * G * H)
 
 
+def consistent(t, work):
+    """The consistent Laplacian (laplacian consistent; BiCGStab): still
+    water stays still and hydrostatic too."""
+    case = make_case(work, "consistent", [
+        ("bodies/water/laplacian", "consistent"),
+        ("bodies/water/pressureSolver/solver", "BiCGStab")])
+    ok, out = run_steps(t, case, ("blockMesh", "seedParticles",
+                                  "isphTlsphFoam"), "consistent: ")
+    if not ok:
+        return
+    series = times(case)
+    t.check_close("consistent: ran to 2 s", series[-1][0], 2.0, 1e-9)
+    top = max(x[1] for x in read_cloud(case, series[0][1], "water")
+              ["positions"])
+    c = read_cloud(case, series[-1][1], "water")
+    bottom = [p for p, x in zip(c["p"], c["positions"]) if x[1] < DX]
+    t.check_close("consistent: bottom pressure at 2 s vs rho g (y_s - dx/2)",
+                  sum(bottom) / len(bottom), RHO * G * (top - DX / 2), 0.01)
+    scale = math.sqrt(G * H)
+    largest = max(m for _, _, m in speed_history(case, "water"))
+    t.check("consistent: largest spurious speed over 2 s %.2e < 3e-3 sqrt(gH)"
+            % (largest / scale), largest < 3e-3 * scale)
+
+
 def bad_input(t, work):
     case = make_case(work, "noConvergence",
                      [("bodies/water/pressureSolver/maxIter", 1)], end=0.01)
@@ -152,7 +176,18 @@ def bad_input(t, work):
         for w in ("solver", "Jacobi", "CG"):
             t.check("unknownSolver: the error names '%s'" % w, w in out,
                     out[-1200:])
+    case = make_case(work, "unknownLaplacian",
+                     [("bodies/water/laplacian", "exact")], end=0.01)
+    ok, _ = run_steps(t, case, ("blockMesh", "seedParticles"),
+                      "unknownLaplacian: ")
+    if ok:
+        code, out = run(["isphTlsphFoam"], case)
+        t.check("unknownLaplacian: the run stops", code != 0, out[-600:])
+        for w in ("laplacian", "exact", "consistent", "particleProperties"):
+            t.check("unknownLaplacian: the error names '%s'" % w, w in out,
+                    out[-1200:])
 
 
 if __name__ == "__main__":
-    sys.exit(run_parts("isphStillWater", still_water, solvers, bad_input))
+    sys.exit(run_parts("isphStillWater", still_water, consistent, solvers,
+                       bad_input))

@@ -29,6 +29,14 @@ namespace bodyModels
 }
 
 
+const Foam::Enum<Foam::meshless::bodyModels::isph::laplacianType>
+Foam::meshless::bodyModels::isph::laplacianNames
+({
+    { laplacianType::symmetric, "symmetric" },
+    { laplacianType::consistent, "consistent" },
+});
+
+
 namespace
 {
     //- The free-surface range (s0 s1) of div r: 0 < s0 < s1 <= dim
@@ -72,6 +80,13 @@ Foam::meshless::bodyModels::isph::isph
     surface_(surfaceRange(dict, body.dim())),
     clipPressure_(dict.found("minPressure")),
     minPressure_(dict.getOrDefault<scalar>("minPressure", 0)),
+    consistent_
+    (
+        readEnumOrDefault
+        (
+            dict, "laplacian", laplacianNames, laplacianType::symmetric
+        ) == laplacianType::consistent
+    ),
     solver_
     (
         linearSolver::New
@@ -271,6 +286,7 @@ void Foam::meshless::bodyModels::isph::advanceDim
 
     // 0. The pressure gradient at x^n for the Laplacian's defect
     //    correction (isphEquations.H)
+    if (!consistent_)
     {
         costAccounting::scope timer(costs, assemblyCost_);
         gather(n, ctx_.sources, correctionTerm<Dim>(src_.data(), B_.data()));
@@ -330,11 +346,17 @@ void Foam::meshless::bodyModels::isph::advanceDim
             divergenceTerm<Dim>{src_.data(), Us, B_.data(), dt*g, divU_.data()}
         );
         rhs_.fill(0);
+        const double* Bc = consistent_ ? B_.data() : nullptr;
+        const double* mc = consistent_ ? moment_.data() : nullptr;
         gather
         (
             n, ctx_.sources,
-            wallHeadTerm<Dim>{src_.data(), V_.data(), g, rho0_, rhs_.data()}
+            wallHeadTerm<Dim>
+            {
+                src_.data(), V_.data(), g, rho0_, rhs_.data(), Bc, mc
+            }
         );
+        if (!consistent_)
         {
             const double* m = moment_.data();
             const double* gp = gradP_.data();
@@ -350,7 +372,7 @@ void Foam::meshless::bodyModels::isph::advanceDim
         isphEquations::assemblePoisson<Dim>
         (
             *own_, V_.data(), alpha_.data(), divr_.data(), divU_.data(),
-            rho0_, dt, rhs_.data(), A_
+            rho0_, dt, rhs_.data(), A_, nullptr, Bc, mc
         );
     }
     {
