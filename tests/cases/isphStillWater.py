@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Case test: still water in a tank with the projection ISPH fluid
-(isphTlsphFoam, model isph).
+(isphTlsphFoam, model isph): the tutorial tutorials/isphTlsphFoam/stillWater.
 
 Water 0.1 m deep in a 0.2 m wide 2D tank (dx = 5 mm, fixed ghost walls of
 4 layers, free slip, cubic spline h = 1.2 dx, hydrostatic start, maxCo
@@ -28,6 +28,7 @@ import os
 import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
+project = os.path.dirname(os.path.dirname(here))
 sys.path.insert(0, os.path.join(os.path.dirname(here), "lib"))
 from caseTest import copy_case, run, run_parts, run_steps  # noqa: E402
 from foamCloud import read_cloud, speed_history, times  # noqa: E402
@@ -47,8 +48,8 @@ def set_entry(case, dictionary, key, value):
 
 
 def make_case(work, name, entries=(), end=None):
-    case = copy_case(os.path.join(here, "isphStillWater"),
-                     os.path.join(work, name))
+    case = copy_case(os.path.join(project, "tutorials", "isphTlsphFoam",
+                                  "stillWater"), os.path.join(work, name))
     for key, value in entries:
         set_entry(case, PP, key, value)
     if end is not None:
@@ -100,6 +101,12 @@ def still_water(t, work):
             % (rms / scale), rms < 1e-3 * scale, str(history))
     t.check("largest spurious speed over 2 s %.2e < 3e-3 sqrt(gH)"
             % (largest / scale), largest < 3e-3 * scale, str(history))
+
+    code, out = run(["/usr/bin/python3", "validation/validate.py", ".",
+                     "--check"], case)
+    t.check("the tutorial's validate.py --check passes and writes result.md",
+            code == 0 and "PASS" in out and os.path.isfile(
+                os.path.join(case, "validation", "result.md")), out[-800:])
 
     parts = run_cost(case)["parts"]
     for part in ("water.isph", "water.poissonAssembly",
