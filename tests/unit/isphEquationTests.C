@@ -409,3 +409,64 @@ TEST(isphEquations, shiftingPushesApartCloseParticles)
     const label far = 3*side + 2 + 1;
     EXPECT_LT(std::hypot(R[2*far], R[2*far + 1]), 1e-12);
 }
+
+
+TEST(isphEquations, wallContactHoldsSurfaceParticlesApproachingAWall)
+{
+    // A floor of 3 layers below y = 0 (normals (0, -1) into the wall, depth
+    // = distance below y = 0) moving at (0.1, 0.02); five fluid particles
+    using namespace Foam::meshless;
+    const double dx = 0.01;
+    std::vector<double> wall;
+    std::vector<double> n, depth;
+    for (int i = -8; i <= 8; ++i)
+    {
+        for (int k = 0; k < 3; ++k)
+        {
+            wall.push_back(i*dx);
+            wall.push_back(-(k + 0.5)*dx);
+            n.push_back(0);
+            n.push_back(-1);
+            depth.push_back((k + 0.5)*dx);
+        }
+    }
+    // 0: surface, 0.3 dx above the face, approaching: held
+    // 1: surface, 0.3 dx above, receding: kept
+    // 2: interior (alpha = 1), 0.3 dx above, approaching: left to the PPE
+    // 3: surface, 0.8 dx above (out of reach 0.5 dx), approaching: kept
+    // 4: partly surface (alpha 0.5), 0.45 dx above, approaching: held
+    const std::vector<double> fluid =
+        {-0.04, 0.003, -0.02, 0.003, 0.0, 0.003, 0.02, 0.008, 0.04, 0.0045};
+    const std::vector<double> alpha = {0, 0, 1, 0, 0.5};
+    std::vector<double> U =
+        {0.3, -0.5, 0.3, 0.5, 0.3, -0.5, 0.3, -0.5, -0.2, -0.1};
+    const std::vector<double> U0 = U;
+    std::vector<double> Uw;
+    for (size_t s = 0; s < depth.size(); ++s)
+    {
+        Uw.push_back(0.1);
+        Uw.push_back(0.02);
+    }
+
+    meshlessTest::pairFixture fx(2);
+    fx.addBody(fluid, dx*dx);
+    fx.addBody(wall, dx*dx);
+    autoPtr<smoothingKernel> W(meshlessTest::kernel(2, dx, spline));
+    const neighbourRelation& rel = fx.relate(0, 1, *W);
+
+    const label held = isphEquations::wallContact<2>
+    (
+        rel, n.data(), depth.data(), Uw.data(), 0.5*dx, alpha.data(),
+        U.data()
+    );
+    EXPECT_EQ(held, 2);
+    // Held: the wall's normal velocity, the tangential one kept
+    EXPECT_DOUBLE_EQ(U[0], 0.3);
+    EXPECT_NEAR(U[1], 0.02, 1e-15);
+    EXPECT_DOUBLE_EQ(U[8], -0.2);
+    EXPECT_NEAR(U[9], 0.02, 1e-15);
+    for (const int k : {2, 3, 4, 5, 6, 7})
+    {
+        EXPECT_EQ(U[k], U0[k]) << "component " << k;
+    }
+}

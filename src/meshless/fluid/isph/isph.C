@@ -80,6 +80,7 @@ Foam::meshless::bodyModels::isph::isph
     surface_(surfaceRange(dict, body.dim())),
     clipPressure_(dict.found("minPressure")),
     minPressure_(dict.getOrDefault<scalar>("minPressure", 0)),
+    contactReach_(readNonNegativeOrDefault(dict, "wallContact", 0)),
     consistent_
     (
         readEnumOrDefault
@@ -418,6 +419,26 @@ void Foam::meshless::bodyModels::isph::advanceDim
         for (label k = 0; k < nv; ++k)
         {
             U[k] = Us[k] - c*gp[k];
+        }
+        if (contactReach_ > 0)
+        {
+            const scalar reach = contactReach_*body_.spacing();
+            for (const boundary& b : boundaries_)
+            {
+                ghostBoundary& g = *b.ghosts;
+                const particleSet& gs = g.ghostBody().particles();
+                if (!g.normals() || !gs.found("wallDistance")) continue;
+                isphEquations::wallContact<Dim>
+                (
+                    *b.toGhosts, g.normals(),
+                    gs.field("wallDistance").data(), g.U(), reach,
+                    alpha_.data(), U
+                );
+            }
+        }
+        #pragma omp parallel for schedule(static)
+        for (label k = 0; k < nv; ++k)
+        {
             x[k] += 0.5*dt*(U[k] - U0[k]);
             acc[k] = (U[k] - U0[k])/dt;
         }
