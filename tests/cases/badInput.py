@@ -381,6 +381,23 @@ CASES = [
      sub(PP, "artificialViscosity { alpha 0.1; }",
          "artificialViscosity { alpha 0.1; } viscosity { mu -1; }"),
      ["particleProperties", "mu", "> 0"]),
+    # subParticleTurbulence reads Cs when it is constructed, before the
+    # check of the body's model (isph): the ulph base shows both messages
+    ("effect: negative subParticleTurbulence Cs", "seeded", "ulphPdFoam",
+     sub(PP, "artificialViscosity { alpha 0.1; }",
+         "artificialViscosity { alpha 0.1; }"
+         " subParticleTurbulence { Cs -0.1; }"),
+     ["particleProperties", "'Cs'", "-0.1", "> 0"]),
+    ("effect: subParticleTurbulence Cs not a number", "seeded", "ulphPdFoam",
+     sub(PP, "artificialViscosity { alpha 0.1; }",
+         "artificialViscosity { alpha 0.1; }"
+         " subParticleTurbulence { Cs small; }"),
+     ["particleProperties", "'Cs'", "small", "> 0"]),
+    ("effect: subParticleTurbulence on a ulph fluid", "seeded", "ulphPdFoam",
+     sub(PP, "artificialViscosity { alpha 0.1; }",
+         "artificialViscosity { alpha 0.1; }"
+         " subParticleTurbulence { Cs 0.1; }"),
+     ["particleProperties", "subParticleTurbulence", "water", "isph"]),
     ("effect: unknown densityFilter method", "seeded", "ulphPdFoam",
      sub(PP, "densityFilter       { interval 20; }",
          "densityFilter       { interval 20; method Shepherd; }"),

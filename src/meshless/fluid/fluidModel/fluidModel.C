@@ -238,10 +238,13 @@ void Foam::meshless::fluidModel::setContext()
     ctx_.Usrc.resize(nSrc);
     ctx_.massSrc.resize(nSrc);
     ctx_.wallSource.assign(nSrc, false);
+    ctx_.Uown.resize(nSrc);
+    ctx_.noSlip.assign(nSrc, true);
 
     ctx_.sources[0] = {own_, V_.data()};
     ctx_.Usrc[0] = U_.data();
     ctx_.massSrc[0] = mass_.data();
+    ctx_.Uown[0] = U_.data();
     for (size_t k = 0; k < boundaries_.size(); ++k)
     {
         const ghostBoundary& g = *boundaries_[k].ghosts;
@@ -249,6 +252,8 @@ void Foam::meshless::fluidModel::setContext()
         ctx_.Usrc[k + 1] = g.Uvisc();
         ctx_.massSrc[k + 1] = g.mass();
         ctx_.wallSource[k + 1] = boundaries_[k].wall;
+        ctx_.Uown[k + 1] = g.U();
+        ctx_.noSlip[k + 1] = g.slipNormals() == nullptr;
     }
 }
 
