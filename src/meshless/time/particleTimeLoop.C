@@ -60,6 +60,7 @@ Foam::meshless::particleTimeLoop::particleTimeLoop
     ),
     maxCo_(readPositiveOrDefault(runTime.controlDict(), "maxCo", 0.25)),
     maxDeltaT_(readPositiveOrDefault(runTime.controlDict(), "maxDeltaT", GREAT)),
+    largestStep_(0),
     writeControl_(runTime.controlDict().get<word>("writeControl")),
     writeInterval_(readPositive(runTime.controlDict(), "writeInterval")),
     writeOrigin_(runTime.startTime().value())
@@ -295,11 +296,26 @@ void Foam::meshless::particleTimeLoop::run(const stepFunction& step)
     {
         if (adjustTimeStep_)
         {
+            // A stable step six orders of magnitude below the largest step
+            // of the run: a speed or an acceleration grew without bound
+            const scalar stable = min(scene_.maxDeltaT(maxCo_), maxDeltaT_);
+            if (stable < 1e-6*largestStep_)
+            {
+                FatalErrorInFunction
+                    << "Blow-up at time " << runTime_.timeName()
+                    << ": the stable time step collapsed to " << stable
+                    << " s, below 1e-6 of the run's largest step ("
+                    << largestStep_ << " s): a speed or an acceleration"
+                    << " grew without bound (maxCo " << maxCo_ << ")" << nl
+                    << "    Last good state on disk: time " << lastWritten
+                    << exit(FatalError);
+            }
             runTime_.setDeltaT(adaptiveDeltaT(), false);
         }
 
         ++runTime_;
         const scalar dt = runTime_.deltaTValue();
+        largestStep_ = max(largestStep_, dt);
         const label nParticles = scene_.nParticles();
 
         step(runTime_.value() - dt, dt);
