@@ -31,10 +31,14 @@ here = os.path.dirname(os.path.abspath(__file__))
 project = os.path.dirname(os.path.dirname(here))
 sys.path.insert(0, os.path.join(os.path.dirname(here), "lib"))
 from caseTest import copy_case, run, run_parts, run_steps  # noqa: E402
-from foamCloud import read_cloud, speed_history, times  # noqa: E402
+from foamCloud import read_cloud, times  # noqa: E402
 from foamMonitor import run_cost  # noqa: E402
 
-H, WIDTH, DX, G, RHO = 0.1, 0.2, 0.005, 9.81, 1000.0
+TUTORIAL = os.path.join(project, "tutorials", "isphTlsphFoam", "stillWater")
+sys.path.insert(0, os.path.join(TUTORIAL, "validation"))
+import validate as still  # noqa: E402  (the tutorial's measures)
+
+H, G, RHO = 0.1, 9.81, 1000.0
 PP = "constant/particleProperties"
 CD = "system/controlDict"
 
@@ -48,8 +52,7 @@ def set_entry(case, dictionary, key, value):
 
 
 def make_case(work, name, entries=(), end=None):
-    case = copy_case(os.path.join(project, "tutorials", "isphTlsphFoam",
-                                  "stillWater"), os.path.join(work, name))
+    case = copy_case(TUTORIAL, os.path.join(work, name))
     for key, value in entries:
         set_entry(case, PP, key, value)
     if end is not None:
@@ -68,39 +71,22 @@ def still_water(t, work):
     t.check("log reports the pressure solves",
             "water: pressure CG," in out and "iterations, residual" in out)
 
-    series = times(case)
-    t.check_close("ran to 2 s", series[-1][0], 2.0, 1e-9)
-    bottom, surface = [], []
-    top = max(x[1] for x in read_cloud(case, series[0][1], "water")
-              ["positions"])
-    for time, folder in series:
-        if time < 1 - 1e-9:
-            continue
-        c = read_cloud(case, folder, "water")
-        bottom += [p for p, x in zip(c["p"], c["positions"]) if x[1] < DX]
-        surface += [p - RHO * G * (top - x[1])
-                    for p, x in zip(c["p"], c["positions"])
-                    if x[1] > top - DX / 2]
-    expected = RHO * G * (top - DX / 2)
+    m = still.measure(case)
+    t.check_close("ran to 2 s", m["end"], 2.0, 1e-9)
     t.check_close("bottom pressure over 1-2 s vs rho g (y_s - dx/2)",
-                  sum(bottom) / len(bottom), expected, 0.01)
-    noise = math.sqrt(sum(s * s for s in surface) / len(surface))
+                  m["bottom"], m["expected"], 0.01)
     t.check("surface row: pressure off hydrostatics by %.4f rho g H RMS"
-            " (< 0.01)" % (noise / (RHO * G * H)), noise < 0.01 * RHO * G * H)
-
-    c = read_cloud(case, series[-1][1], "water")
-    t.check_equal("no particle lost", len(c["positions"]), 40 * 20)
-    t.check("every particle inside the tank",
-            all(0 <= x[0] <= WIDTH and x[1] >= 0 for x in c["positions"]))
-
+            " (< 0.01)" % (m["noise"] / (RHO * G * H)),
+            m["noise"] < 0.01 * RHO * G * H)
+    t.check("no particle lost", m["kept"])
+    t.check("every particle inside the tank", m["inside"])
     scale = math.sqrt(G * H)
-    history = speed_history(case, "water")
-    rms = max(r for _, r, _ in history)
-    largest = max(m for _, _, m in history)
+    rms = max(r for _, r, _ in m["history"])
+    largest = max(x for _, _, x in m["history"])
     t.check("RMS spurious speed, largest over 2 s, %.2e < 1e-3 sqrt(gH)"
-            % (rms / scale), rms < 1e-3 * scale, str(history))
+            % (rms / scale), rms < 1e-3 * scale, str(m["history"]))
     t.check("largest spurious speed over 2 s %.2e < 3e-3 sqrt(gH)"
-            % (largest / scale), largest < 3e-3 * scale, str(history))
+            % (largest / scale), largest < 3e-3 * scale, str(m["history"]))
 
     code, out = run(["/usr/bin/python3", "validation/validate.py", ".",
                      "--check"], case)
@@ -147,18 +133,14 @@ def consistent(t, work):
                                   "isphTlsphFoam"), "consistent: ")
     if not ok:
         return
-    series = times(case)
-    t.check_close("consistent: ran to 2 s", series[-1][0], 2.0, 1e-9)
-    top = max(x[1] for x in read_cloud(case, series[0][1], "water")
-              ["positions"])
-    c = read_cloud(case, series[-1][1], "water")
-    bottom = [p for p, x in zip(c["p"], c["positions"]) if x[1] < DX]
-    t.check_close("consistent: bottom pressure at 2 s vs rho g (y_s - dx/2)",
-                  sum(bottom) / len(bottom), RHO * G * (top - DX / 2), 0.01)
+    m = still.measure(case)
+    t.check_close("consistent: ran to 2 s", m["end"], 2.0, 1e-9)
+    t.check_close("consistent: bottom pressure over 1-2 s vs rho g"
+                  " (y_s - dx/2)", m["bottom"], m["expected"], 0.01)
     scale = math.sqrt(G * H)
-    largest = max(m for _, _, m in speed_history(case, "water"))
-    t.check("consistent: largest spurious speed over 2 s %.2e < 3e-3 sqrt(gH)"
-            % (largest / scale), largest < 3e-3 * scale)
+    largest = max(x for _, _, x in m["history"])
+    t.check("consistent: largest spurious speed over 2 s %.2e < 3e-3"
+            " sqrt(gH)" % (largest / scale), largest < 3e-3 * scale)
 
 
 def bad_input(t, work):
