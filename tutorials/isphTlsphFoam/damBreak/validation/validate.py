@@ -28,7 +28,6 @@ Writes validation/result<suffix>.md and front<suffix>.png and keeps the
 run's figures in validation/runs/. With --check, exits 1 when a check
 fails.
 """
-import math
 import os
 import sys
 
@@ -36,80 +35,14 @@ here = os.path.dirname(os.path.abspath(__file__))
 project = os.environ.get("MESHLESS_PROJECT") or os.path.abspath(
     os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
-from foamCloud import read_positions, times  # noqa: E402
-from foamDict import dictionary_entry  # noqa: E402
-from foamMonitor import (arguments, case_spacing, interp, load_runs,  # noqa
-                         pyplot, read_rows, result_suffix, run_cost,
-                         save_run, wall_time)
-from fsiChecks import energy_total, largest_rise  # noqa: E402
+from foamMonitor import (arguments, case_spacing, load_runs,  # noqa
+                         pyplot, result_suffix, run_cost, save_run, wall_time)
+from fsiChecks import largest_rise  # noqa: E402
+from damBreakFront import (H, front, front_errors, rms,  # noqa
+                           series, stability)
 
-H, G, RHO0, DX0 = 0.057, 9.81, 1000.0, 0.002
+DX0 = 0.002
 TARGET = 0.05
-ENERGY_SCALE = RHO0 * G * H ** 3 / 2
-
-
-def series(path):
-    """(x, y) rows of a reference file (read_rows: '#' comments)"""
-    return [(r[0], r[1]) for r in read_rows(path)]
-
-
-def front(case):
-    ts, xs = [], []
-    for t, name in times(case):
-        x = read_positions(case, name, "water")
-        ts.append(t * math.sqrt(G / H))
-        xs.append(max(p[0] for p in x) / H)
-    return ts, xs
-
-
-def front_errors(ts, xs):
-    """[(T, experiment, reference, simulated)] at the experiment's times
-    before the reference front reaches the far wall"""
-    ref = series(os.path.join(here, "interFoamFrontNoSurfaceTension.dat"))
-    exp = series(os.path.join(here, "martinMoyce1952.dat"))
-    rT, rX = [a for a, _ in ref], [b for _, b in ref]
-    rows = []
-    for T, xe in exp:
-        if T > ts[-1]:
-            continue
-        xr = interp(T, rT, rX)
-        if xr >= 4 - 1e-3:
-            continue
-        rows.append((T, xe, xr, interp(T, ts, xs)))
-    return rows
-
-
-def rms(values):
-    return math.sqrt(sum(v * v for v in values) / len(values))
-
-
-def stability(case, dx):
-    checks = []
-    series_ = times(case)
-    t1 = series_[-1][0]
-    end = float(dictionary_entry(case, "endTime", "system/controlDict"))
-    checks.append(("ran to endTime %g s (last time %g s)" % (end, t1),
-                   abs(t1 - end) < 1e-9))
-    n0 = len(read_positions(case, series_[0][1], "water"))
-    lost, depth = None, 0.0
-    for value, name in series_:
-        x = read_positions(case, name, "water")
-        if len(x) != n0:
-            lost = value
-            break
-        depth = max(depth, max(max(-p[0], p[0] - 4 * H, -p[1]) for p in x))
-    checks.append(("the water keeps its %d particles at all %d written"
-                   " times%s" % (n0, len(series_), "" if lost is None
-                                 else ": lost at %g s" % lost), lost is None))
-    checks.append(("deepest wall penetration at any written time %.2f dx"
-                   " < 0.5 dx" % (depth / dx), depth < 0.5 * dx))
-    total = energy_total(case)
-    rise = largest_rise(total)
-    checks.append(("total energy never rises above its lowest earlier value"
-                   " by more than 2.5 %% of rho0 g H^3/2 = %.3f J/m (largest"
-                   " rise %.3f %%)" % (ENERGY_SCALE, 100 * rise / ENERGY_SCALE),
-                   rise <= 0.025 * ENERGY_SCALE))
-    return checks, total
 
 
 def plot(suffix, ts, xs, label):
@@ -139,10 +72,10 @@ def main():
     dx = case_spacing(case, DX0)
     suffix = result_suffix(dx, DX0)
     ts, xs = front(case)
-    rows = front_errors(ts, xs)
+    rows = front_errors(ts, xs, here)
     err = rms([r[3] - r[2] for r in rows])
     err_exp = rms([r[3] - r[1] for r in rows])
-    checks, total = stability(case, dx)
+    checks, total = stability(case, dx, 0.025)
     cost = run_cost(case)
     front_ok = err < TARGET
     stable = all(ok for _, ok in checks)
