@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """Case test: still water in a tank with the projection ISPH fluid
-(isphTlsphFoam, model isph): the tutorial tutorials/isphTlsphFoam/stillWater.
+(isphTlsphFoam, model isph): the tutorial tutorials/isphTlsphFoam/stillWater, and its
+validate.py --check.
 
 Water 0.1 m deep in a 0.2 m wide 2D tank (dx = 5 mm, fixed ghost walls of
 4 layers, free slip, cubic spline h = 1.2 dx, hydrostatic start, maxCo
@@ -19,6 +20,9 @@ Water 0.1 m deep in a 0.2 m wide 2D tank (dx = 5 mm, fixed ghost walls of
   (iterations, residual); the run cost has the model's parts;
 - the solvers agree: 0.05 s with CG, BiCGStab and BoomerAMG give the same
   pressures within 1e-6 of rho g H;
+- the consistent Laplacian (laplacian consistent, BiCGStab) keeps it still
+  and hydrostatic too; an unknown laplacian is an error naming it, and so
+  is laplacian consistent with CG (a solver for symmetric matrices);
 - a solve that cannot converge (maxIter 1) stops the run with a diagnosis
   naming the solver and its residual; an unknown solver is an error
   naming 'solver'.
@@ -174,6 +178,17 @@ def bad_input(t, work):
         t.check("unknownLaplacian: the run stops", code != 0, out[-600:])
         for w in ("laplacian", "exact", "consistent", "particleProperties"):
             t.check("unknownLaplacian: the error names '%s'" % w, w in out,
+                    out[-1200:])
+    case = make_case(work, "consistentCG",
+                     [("bodies/water/laplacian", "consistent")], end=0.01)
+    ok, _ = run_steps(t, case, ("blockMesh", "seedParticles"),
+                      "consistentCG: ")
+    if ok:
+        code, out = run(["isphTlsphFoam"], case)
+        t.check("consistentCG: the run stops", code != 0, out[-600:])
+        for w in ("laplacian consistent", "CG", "BiCGStab",
+                  "particleProperties"):
+            t.check("consistentCG: the error names '%s'" % w, w in out,
                     out[-1200:])
 
 

@@ -125,6 +125,15 @@ Foam::meshless::bodyModels::isph::isph
     last_.iterations = 0;
     last_.initialResidual = 0;
     last_.finalResidual = 0;
+
+    if (consistent_ && solver_->needsSymmetric())
+    {
+        FatalIOErrorInFunction(dict)
+            << "laplacian consistent gives a non-symmetric pressure matrix,"
+            << " which pressureSolver " << solver_->type() << " cannot"
+            << " solve: expected solver BiCGStab or BoomerAMG (or laplacian"
+            << " symmetric)" << exit(FatalIOError);
+    }
 }
 
 
