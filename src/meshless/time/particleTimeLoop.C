@@ -157,9 +157,12 @@ bool Foam::meshless::particleTimeLoop::lastStep() const
 }
 
 
-Foam::scalar Foam::meshless::particleTimeLoop::adaptiveDeltaT() const
+Foam::scalar Foam::meshless::particleTimeLoop::adaptiveDeltaT
+(
+    const scalar stable
+) const
 {
-    scalar dt = min(scene_.maxDeltaT(maxCo_), maxDeltaT_);
+    scalar dt = stable;
 
     // Land on the next write time and on the end time with equal steps no
     // longer than dt (Time::adjustDeltaT would round the step count to the
@@ -310,7 +313,7 @@ void Foam::meshless::particleTimeLoop::run(const stepFunction& step)
                     << "    Last good state on disk: time " << lastWritten
                     << exit(FatalError);
             }
-            runTime_.setDeltaT(adaptiveDeltaT(), false);
+            runTime_.setDeltaT(adaptiveDeltaT(stable), false);
         }
 
         ++runTime_;
