@@ -41,6 +41,8 @@ Description
 #include "smallTensor.H"
 #include "linearElastic.H"
 #include "stVenantKirchhoff.H"
+#include "solidJacobian.H"
+#include <Eigen/Dense>
 #include <random>
 
 using namespace Foam;
@@ -949,3 +951,138 @@ TEST(tlsph, taylorNodalIntegrationResistsTheCheckerboard)
 
 
 // ************************************************************************* //
+
+
+// The implicit integrator's tangent (solidJacobian): the coloured
+// differences are the column-by-column ones (brute force) on a perturbed,
+// deformed block with a nonlinear law and the hourglass force, a mirrored
+// clamp (images move as minus their mirrors and pass their forces on to
+// them), and far fewer colours than
+// particles; the factorised Newton matrix solves like a dense LU of it
+TEST(tlsph, colouredJacobianIsTheColumnByColumnJacobian)
+{
+    const label nSide = 24;
+    const double dx = 0.01;
+    const block<2> b(nSide, dx, 0.1);
+    const autoPtr<constitutiveLaw> L =
+        law("type stVenantKirchhoff; E 1e6; nu 0.3; plane strain;", 2);
+    const label n = b.n;
+    const label nv = 2*n;
+
+    // A mirrored clamp on the face x = 1.5 dx: the first two columns are
+    // images of the next two (column 0 of 3, 1 of 2), their displacement
+    // minus their mirror's, the force on an image acting on its mirror,
+    // reversed (tlsph's variational clamp)
+    std::vector<char> free(n, 1);
+    std::vector<label> mirror(n, -1);
+    for (label a = 0; a < n; ++a)
+    {
+        const label col = label(std::round(b.X[2*a]/dx));
+        if (col > 1) continue;
+        free[a] = 0;
+        for (label c = 0; c < n; ++c)
+        {
+            if
+            (
+                label(std::round(b.X[2*c]/dx)) == 3 - col
+             && mag(b.X[2*c + 1] - b.X[2*a + 1]) < 0.5*dx
+            )
+            {
+                mirror[a] = c;
+            }
+        }
+        ASSERT_GE(mirror[a], 0);
+    }
+    auto prescribe = [&](std::vector<double>& x)
+    {
+        for (label a = 0; a < n; ++a)
+        {
+            if (free[a]) continue;
+            for (int d = 0; d < 2; ++d)
+            {
+                const label m = mirror[a];
+                x[2*a + d] = b.X[2*a + d]
+                  - (m >= 0 ? x[2*m + d] - b.X[2*m + d] : 0);
+            }
+        }
+    };
+    const double rho = 1000;
+    auto accel = [&](std::vector<double> x)
+    {
+        prescribe(x);
+        std::vector<double> a = b.force(x, L(), 10);
+        for (label g = 0; g < n; ++g)
+        {
+            if (mirror[g] < 0) continue;
+            for (int d = 0; d < 2; ++d) a[2*mirror[g] + d] -= a[2*g + d];
+        }
+        for (label i = 0; i < n; ++i)
+        {
+            for (int d = 0; d < 2; ++d)
+            {
+                a[2*i + d] = free[i] ? a[2*i + d]/(rho*b.V[i]) : 0;
+            }
+        }
+        return a;
+    };
+
+    // A deformed state: a stretch and shear and random displacements
+    const double A[] = {1.03, 0.08, -0.02, 0.97};
+    std::vector<double> x = affine(b, A);
+    std::mt19937_64 gen(11);
+    std::uniform_real_distribution<double> u(-0.05*dx, 0.05*dx);
+    for (auto& v : x) v += u(gen);
+    prescribe(x);
+    const std::vector<double> a0 = accel(x);
+
+    solidJacobian J(b.pairs, 2, free, mirror);
+    std::vector<double> buf;
+    const double eps = 1e-6*dx;
+    J.assemble
+    (
+        a0.data(), eps, 1,
+        [&](const std::vector<label>& members, int d, double e)
+        {
+            std::vector<double> xp(x);
+            if (d >= 0) for (const label k : members) xp[2*k + d] += e;
+            buf = accel(xp);
+            return buf.data();
+        }
+    );
+    EXPECT_LT(J.nColours(), n/4) << J.nColours() << " colours";
+
+    // Brute force: one column at a time
+    Eigen::MatrixXd Kb = Eigen::MatrixXd::Zero(nv, nv);
+    for (label k = 0; k < n; ++k)
+    {
+        if (!free[k]) continue;
+        for (int d = 0; d < 2; ++d)
+        {
+            std::vector<double> xp(x);
+            xp[2*k + d] += eps;
+            const std::vector<double> a = accel(xp);
+            for (label r = 0; r < nv; ++r) Kb(r, 2*k + d) = -(a[r] - a0[r])/eps;
+        }
+    }
+    const Eigen::MatrixXd Kc(J.stiffness());
+    const double scale = Kb.cwiseAbs().maxCoeff();
+    EXPECT_LT((Kc - Kb).cwiseAbs().maxCoeff()/scale, 1e-6);
+
+    // The Newton matrix shift I + K (free rows), solved against dense LU
+    const double shift = 0.05*scale;
+    ASSERT_TRUE(J.factorise(shift, 0));
+    Eigen::MatrixXd Jd = Kb;
+    for (label r = 0; r < nv; ++r)
+    {
+        if (!free[r/2]) Jd.row(r).setZero();
+        Jd(r, r) += shift;
+    }
+    Eigen::VectorXd rhs = Eigen::VectorXd::Random(nv);
+    for (label r = 0; r < nv; ++r) if (!free[r/2]) rhs(r) = 0;
+    std::vector<double> sol(nv);
+    J.solve(rhs.data(), sol.data());
+    const Eigen::VectorXd ref = Jd.partialPivLu().solve(rhs);
+    double err = 0;
+    for (label r = 0; r < nv; ++r) err = max(err, mag(sol[r] - ref(r)));
+    EXPECT_LT(err/ref.cwiseAbs().maxCoeff(), 1e-6);
+}

@@ -242,6 +242,14 @@ void Foam::meshless::particleTimeLoop::writeRunCost
 void Foam::meshless::particleTimeLoop::run(const stepFunction& step)
 {
     const scalar stable = scene_.maxDeltaT(maxCo_);
+    if (adjustTimeStep_ && stable >= 0.5*GREAT && maxDeltaT_ >= 0.5*GREAT)
+    {
+        FatalIOErrorInFunction(runTime_.controlDict())
+            << "adjustTimeStep is on but no body limits the step (e.g. a"
+            << " solid alone with integrator implicit): expected 'maxDeltaT'"
+            << " in controlDict, or adjustTimeStep no with deltaT"
+            << exit(FatalIOError);
+    }
     if (adjustTimeStep_)
     {
         Info<< "Adaptive time step: maxCo " << maxCo_ << ", maxDeltaT "

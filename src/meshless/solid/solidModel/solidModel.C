@@ -7,12 +7,14 @@
 #include "particleExpression.H"
 #include "smallTensor.H"
 #include "dictionaryChecks.H"
+#include <cmath>
 
 const Foam::Enum<Foam::meshless::solidModel::integratorType>
 Foam::meshless::solidModel::integratorNames
 ({
     { integratorType::verlet, "verlet" },
     { integratorType::rk4, "rk4" },
+    { integratorType::implicit, "implicit" },
 });
 
 
@@ -54,6 +56,18 @@ Foam::meshless::solidModel::solidModel
     ),
     maxCo_(0.3),
     accValid_(false),
+    beta_(0.25),
+    gamma_(0.5),
+    alphaM_(0),
+    alphaF_(0),
+    newtonTol_(1e-8),
+    newtonMaxIter_(20),
+    jacobian_(),
+    an_(nullptr),
+    aNewmark_(nullptr),
+    newtonIters_(0),
+    newtonResidual_(0),
+    failure_(),
     xn_(nullptr),
     Un_(nullptr),
     sumX_(nullptr),
@@ -68,6 +82,52 @@ Foam::meshless::solidModel::solidModel
         Un_ = &set.addScratchField("Un", particleField::kind::vector);
         sumX_ = &set.addScratchField("sumX", particleField::kind::vector);
         sumU_ = &set.addScratchField("sumU", particleField::kind::vector);
+    }
+    if (integrator_ == integratorType::implicit)
+    {
+        xn_ = &set.addScratchField("xn", particleField::kind::vector);
+        Un_ = &set.addScratchField("Un", particleField::kind::vector);
+        an_ = &set.addScratchField("an", particleField::kind::vector);
+        aNewmark_ =
+            &set.addScratchField("aNewmark", particleField::kind::vector);
+        // Generalised-alpha (Chung and Hulbert 1993), second order, the
+        // highest frequencies damped to rhoInfinity per step (default
+        // 0.8); or Newmark's average acceleration (no damping)
+        const dictionary d
+        (
+            dict.found("implicit") ? dict.subDict("implicit") : dictionary()
+        );
+        const word scheme(d.getOrDefault<word>("scheme", "generalisedAlpha"));
+        if (scheme == "generalisedAlpha")
+        {
+            const scalar rho = d.getOrDefault<scalar>("rhoInfinity", 0.8);
+            if (!(rho >= 0 && rho <= 1))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "implicit: rhoInfinity " << rho << ": expected"
+                    << " 0 <= rhoInfinity <= 1 (the spectral radius at high"
+                    << " frequency)" << exit(FatalIOError);
+            }
+            alphaM_ = (2*rho - 1)/(rho + 1);
+            alphaF_ = rho/(rho + 1);
+            gamma_ = 0.5 - alphaM_ + alphaF_;
+            beta_ = 0.25*sqr(1 - alphaM_ + alphaF_);
+        }
+        else if (scheme != "newmark")
+        {
+            FatalIOErrorInFunction(dict)
+                << "implicit: scheme " << scheme << ": expected"
+                << " generalisedAlpha (the default) or newmark"
+                << exit(FatalIOError);
+        }
+        newtonTol_ = readPositiveOrDefault(d, "tolerance", 1e-8);
+        newtonMaxIter_ =
+            d.found("maxIter") ? readPositiveLabel(d, "maxIter") : 20;
+        const label nv = set.size()*body.dim();
+        newtonR_.assign(nv, 0);
+        newtonDx_.assign(nv, 0);
+        xNext_.assign(nv, 0);
+        perturbA_.assign(nv, 0);
     }
 
     // A fresh start: the seeded state is the reference configuration
@@ -126,6 +186,9 @@ Foam::scalar Foam::meshless::solidModel::stableDeltaT
     const scalar maxCo
 ) const
 {
+    // Newmark's average acceleration is unconditionally stable: the step
+    // is the scene's (the fluid's, or controlDict's deltaT or maxDeltaT)
+    if (implicit()) return GREAT;
     return maxCo*body_.kernel().h()/(waveSpeed() + U_.maxMagnitude());
 }
 
@@ -242,6 +305,289 @@ void Foam::meshless::solidModel::stepVerlet
 }
 
 
+void Foam::meshless::solidModel::assembleJacobian
+(
+    const scalar t,
+    costAccounting& costs
+)
+{
+    particleSet& set = body_.particles();
+    const label n = set.size();
+    const label dim = body_.dim();
+    const label nv = n*dim;
+    if (!jacobian_)
+    {
+        const neighbourRelation* pairs = referencePairs();
+        if (!pairs)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "integrator implicit: model " << type() << " has no"
+                << " reference pairs to build its tangent from: expected a"
+                << " correspondence solid (tlsph, nosbPd)" << exit(FatalIOError);
+        }
+        std::vector<char> free(n);
+        std::vector<label> mirror(n, -1);
+        for (label i = 0; i < n; ++i)
+        {
+            free[i] = constraints_->isFree(i);
+            mirror[i] = constraints_->partner(i);
+        }
+        jacobian_.reset(new solidJacobian(*pairs, dim, free, mirror));
+    }
+
+    particleField& xf = set.positions();
+    double* x = xf.data();
+    double* U = U_.data();
+    const double* acc = acc_.data();
+
+    // The state: its accelerations a0, positions and velocities kept
+    std::vector<double> a0(acc, acc + nv);
+    std::vector<double> x0(x, x + nv);
+    std::vector<double> U0(U, U + nv);
+
+    const bool linear = law_->geometricallyLinear() && !law_->incremental();
+    const scalar h = body_.kernel().h();
+    const double eps = (linear ? 1e-3 : 1e-6)*h;
+    const double epsU =
+        (linear ? 1e-3 : 1e-6)*max(U_.maxMagnitude(), waveSpeed()*1e-3);
+
+    solidJacobian::perturbed perturb =
+        [&](const std::vector<label>& members, int d, double e)
+        -> const double*
+    {
+        std::copy(x0.begin(), x0.end(), x);
+        std::copy(U0.begin(), U0.end(), U);
+        if (d < 0)
+        {
+            for (label k = 0; k < nv; ++k) U[k] += e;
+        }
+        else
+        {
+            for (const label k : members) x[k*dim + d] += e;
+        }
+        constraints_->prescribe(t, X0_, xf, U_);
+        evaluate(t, false, costs);
+        std::copy(acc, acc + nv, perturbA_.begin());
+        return perturbA_.data();
+    };
+    jacobian_->assemble(a0.data(), eps, epsU, perturb);
+
+    // Back to the state
+    std::copy(x0.begin(), x0.end(), x);
+    std::copy(U0.begin(), U0.end(), U);
+    constraints_->prescribe(t, X0_, xf, U_);
+    std::copy(a0.begin(), a0.end(), acc_.data());
+}
+
+
+bool Foam::meshless::solidModel::newmarkStep
+(
+    const scalar t,
+    const scalar dt,
+    costAccounting& costs
+)
+{
+    particleSet& set = body_.particles();
+    particleField& xf = set.positions();
+    const label n = set.size();
+    const label dim = body_.dim();
+    const label nv = n*dim;
+    double* x = xf.data();
+    double* U = U_.data();
+    double* acc = acc_.data();
+    double* xn = xn_->data();
+    double* Un = Un_->data();
+    double* an = an_->data();
+    double* aS = aNewmark_->data();
+    double* r = newtonR_.data();
+    double* dx = newtonDx_.data();
+    double* xe = xNext_.data();
+
+    if (!accValid_)
+    {
+        constraints_->prescribe(t, X0_, xf, U_);
+        evaluate(t, false, costs);
+        accValid_ = true;
+    }
+    std::copy(x, x + nv, xn);
+    std::copy(U, U + nv, Un);
+    std::copy(acc, acc + nv, an);
+
+    // Generalised-alpha (Newmark: alphaM = alphaF = 0): with a(x, u) the
+    // model's accelerations, solve for x^{n+1}
+    //   (1 - aM) a^{n+1} + aM a^n = a(x^{n+1-aF}, u^{n+1-aF}),
+    //   a^{n+1} = (x^{n+1} - x^n - dt u^n)/(beta dt^2) - (1/(2 beta) - 1) a^n,
+    //   u^{n+1} = u^n + dt ((1 - gamma) a^n + gamma a^{n+1}),
+    //   y^{n+1-aF} = (1 - aF) y^{n+1} + aF y^n
+    const double b = beta_, g = gamma_, aM = alphaM_, aF = alphaF_;
+    const double cx = 1/(b*dt*dt);
+    const double cu = g/(b*dt);
+    const double ca = 1/(2*b) - 1;
+    const double wF = 1 - aF;
+    const scalar tAlpha = t + wF*dt;
+    const bool linear = law_->geometricallyLinear() && !law_->incremental();
+    const scalar tolX = newtonTol_*body_.kernel().h();
+
+    // Predictor: the accelerations of t kept
+    #pragma omp parallel for schedule(static)
+    for (label k = 0; k < nv; ++k) xe[k] = xn[k] + dt*Un[k] + 0.5*dt*dt*an[k];
+
+    label iters = 0, refreshes = 0;
+    double lastR = GREAT, lastDx = GREAT;
+    bool converged = false;
+    for (;;)
+    {
+        // a^{n+1}, u^{n+1} of x^{n+1}; the model at the alpha point
+        #pragma omp parallel for schedule(static)
+        for (label k = 0; k < nv; ++k)
+        {
+            aS[k] = cx*(xe[k] - xn[k] - dt*Un[k]) - ca*an[k];
+            const double u = Un[k] + dt*((1 - g)*an[k] + g*aS[k]);
+            x[k] = wF*xe[k] + aF*xn[k];
+            U[k] = wF*u + aF*Un[k];
+        }
+        constraints_->prescribe(tAlpha, X0_, xf, U_);
+        evaluate(tAlpha, false, costs);
+
+        // Residual over (1 - aF): the Newton matrix is then
+        // (1 - aM)/(1 - aF) cx I - da/dx - cu da/du
+        double rn = 0, scale = 0;
+        for (label i = 0; i < n; ++i)
+        {
+            const bool free = constraints_->isFree(i);
+            for (label e = 0; e < dim; ++e)
+            {
+                const label k = i*dim + e;
+                const double lhs = (1 - aM)*aS[k] + aM*an[k];
+                r[k] = free ? (acc[k] - lhs)/wF : 0;
+                rn = max(rn, mag(acc[k] - lhs));
+                if (free) scale = max(scale, max(mag(acc[k]), mag(lhs)));
+            }
+        }
+        if (rn <= newtonTol_*scale || lastDx <= tolX)
+        {
+            lastR = rn;
+            converged = true;
+            break;
+        }
+        if (iters == newtonMaxIter_ || !std::isfinite(rn)) break;
+
+        // The tangent: once for a linear law (a new one only if Newton
+        // stalls); for any other law again whenever its iterations
+        // contract slowly (modified Newton)
+        const bool slow = iters > 0 && rn > 0.5*lastR;
+        if
+        (
+            !jacobian_ || !jacobian_->assembled()
+         || (slow && (!linear || refreshes == 0) && refreshes < 3)
+        )
+        {
+            assembleJacobian(tAlpha, costs);
+            ++refreshes;
+        }
+        const double shift = (1 - aM)/wF*cx;
+        if
+        (
+            !jacobian_->factorised()
+         || mag(shift/jacobian_->shiftX() - 1) > (slow ? 0 : 0.01)
+        )
+        {
+            if (!jacobian_->factorise(shift, cu)) break;
+        }
+        jacobian_->solve(r, dx);
+        double dn = 0;
+        for (label k = 0; k < nv; ++k)
+        {
+            xe[k] += dx[k];
+            dn = max(dn, mag(dx[k]));
+        }
+        lastR = rn;
+        lastDx = dn;
+        ++iters;
+    }
+    newtonIters_ += iters;
+    newtonResidual_ = lastR;
+
+    if (!converged)
+    {
+        // Back to the step's start
+        std::copy(xn, xn + nv, x);
+        std::copy(Un, Un + nv, U);
+        std::copy(an, an + nv, acc);
+        constraints_->prescribe(t, X0_, xf, U_);
+        return false;
+    }
+
+    // The step's end. Newmark (aF = aM = 0): a^{n+1} the model's a(x) at
+    // x^{n+1}; otherwise the algorithmic a^{n+1}
+    #pragma omp parallel for schedule(static)
+    for (label k = 0; k < nv; ++k)
+    {
+        const double a = (aF == 0 && aM == 0) ? acc[k] : aS[k];
+        x[k] = xe[k];
+        U[k] = Un[k] + dt*((1 - g)*an[k] + g*a);
+        acc[k] = a;
+    }
+    constraints_->prescribe(t + dt, X0_, xf, U_);
+    endStep(costs);
+    return true;
+}
+
+
+void Foam::meshless::solidModel::stepImplicit
+(
+    const scalar t,
+    const scalar dt,
+    costAccounting& costs
+)
+{
+    // Newton that does not converge over dt: the step in halves, down to
+    // 1/16 of it
+    newtonIters_ = 0;
+    label parts = 1;
+    const label maxParts = 16;
+    label done = 0;
+    while (done < parts)
+    {
+        const scalar h = dt/parts;
+        if (newmarkStep(t + done*h, h, costs))
+        {
+            ++done;
+        }
+        else if (2*parts <= maxParts)
+        {
+            parts *= 2;
+            done *= 2;
+        }
+        else
+        {
+            OStringStream os;
+            os  << "integrator implicit: Newton did not converge for body "
+                << body_.name() << " over a step of " << dt << " s, nor"
+                << " in " << maxParts << " parts of it (" << newtonMaxIter_
+                << " iterations each, implicit maxIter; residual "
+                << newtonResidual_ << " m/s^2, tolerance " << newtonTol_
+                << " relative)";
+            failure_ = os.str();
+            break;
+        }
+    }
+    accValid_ = true;
+
+    Info<< "    " << body_.name() << ": Newton " << newtonIters_
+        << " iterations";
+    if (parts > 1) Info<< " in " << parts << " parts of the step";
+    Info<< ", residual " << newtonResidual_ << " m/s^2";
+    if (jacobian_)
+    {
+        Info<< ", tangents " << jacobian_->assemblies() << " ("
+            << jacobian_->nColours() << " colours), factorisations "
+            << jacobian_->factorisations();
+    }
+    Info<< endl;
+}
+
+
 void Foam::meshless::solidModel::step
 (
     const scalar t,
@@ -252,6 +598,10 @@ void Foam::meshless::solidModel::step
     if (integrator_ == integratorType::rk4)
     {
         stepRK4(t, dt, costs);
+    }
+    else if (integrator_ == integratorType::implicit)
+    {
+        stepImplicit(t, dt, costs);
     }
     else
     {

@@ -103,11 +103,16 @@ def scheme(case):
     load = optional("constraints/tipLoad/face/point")
     taylor = optional("nodalIntegration") == "taylor"
     if order == "2" and clamp and load:
-        return "faces, taylor" if taylor else "faces"
-    if order == "1" and not clamp and not load:
-        return "paper"
-    return "order %s%s%s" % (order, ", clamp face" if clamp else "",
-                             ", load face" if load else "")
+        name = "faces, taylor" if taylor else "faces"
+    elif order == "1" and not clamp and not load:
+        name = "paper"
+    else:
+        name = "order %s%s%s" % (order, ", clamp face" if clamp else "",
+                                 ", load face" if load else "")
+    if optional("integrator") == "implicit":
+        name += ", implicit dt %g" % float(dictionary_entry(
+            case, "deltaT", "system/controlDict"))
+    return name
 
 
 def analyse(case):

@@ -197,8 +197,19 @@ def scheme(case):
     clamp = entry(case, "bodies/plate/constraints/clamp/face/point",
                   default=None) is not None
     if order == "1":
-        return "face clamp" if clamp else "paper"
-    return "order %s%s" % (order, ", face clamp" if clamp else "")
+        name = "face clamp" if clamp else "paper"
+    else:
+        name = "order %s%s" % (order, ", face clamp" if clamp else "")
+    return name + implicit(case)
+
+
+def implicit(case):
+    """', implicit dt <deltaT>' for the implicit integrator (Allrun
+    -implicit), else ''"""
+    if entry(case, "bodies/plate/integrator", default="verlet") != "implicit":
+        return ""
+    return ", implicit dt %g" % float(entry(case, "deltaT",
+                                            "system/controlDict"))
 
 
 TUTORIAL_SCHEME = "face clamp"
