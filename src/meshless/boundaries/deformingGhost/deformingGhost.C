@@ -7,10 +7,11 @@
 Foam::meshless::deformingGhost::deformingGhost
 (
     particleBody& body,
-    const word& accName
+    const word& accName,
+    const word& velocityName
 )
 :
-    ghostBoundary(body, slipType::noSlip, -GREAT, "ghost"),
+    ghostBoundary(body, slipType::noSlip, -GREAT, "ghost", velocityName),
     acc_
     (
         accName.empty()

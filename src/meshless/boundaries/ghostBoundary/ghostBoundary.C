@@ -48,13 +48,14 @@ Foam::meshless::ghostBoundary::ghostBoundary
     particleBody& body,
     const slipType slip,
     const scalar minPressure,
-    const word& prefix
+    const word& prefix,
+    const word& velocityName
 )
 :
     ghostBody_(body),
     slip_(slip),
     minPressure_(minPressure),
-    Uown_(body.particles().addField("U", particleField::kind::vector)),
+    Uown_(body.particles().addField(velocityName, particleField::kind::vector)),
     p_(body.particles().addField("p", particleField::kind::scalar)),
     rho_(stateField(body.particles(), prefix, "rho", particleField::kind::scalar)),
     mass_(stateField(body.particles(), prefix, "mass", particleField::kind::scalar)),

@@ -3,6 +3,9 @@
 \*---------------------------------------------------------------------------*/
 
 #include "fsiCoupling.H"
+#include "OSspecific.H"
+#include "ghostBoundary.H"
+#include "fluidModel.H"
 #include "particleScene.H"
 #include "solidModel.H"
 
@@ -62,6 +65,76 @@ Foam::meshless::particleBody& Foam::meshless::fsiCoupling::solidBody
             << exit(FatalIOError);
     }
     return b;
+}
+
+
+Foam::List<Foam::meshless::particleBody*>
+Foam::meshless::fsiCoupling::solidBodies() const
+{
+    const wordList names(dict_.get<wordList>("solids"));
+    if (names.empty())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "coupling " << type() << ": 'solids' is empty: expected at"
+            << " least one solid body ("
+            << bodyModel::modelsOf(bodyModel::modelRole::solid) << ")"
+            << exit(FatalIOError);
+    }
+    List<particleBody*> solids;
+    for (const word& name : names) solids.append(&solidBody(name));
+    return solids;
+}
+
+
+Foam::vector Foam::meshless::fsiCoupling::total(const particleField& f)
+{
+    vector s(Zero);
+    for (label i = 0; i < f.size(); ++i)
+    {
+        for (label d = 0; d < f.nComponents(); ++d) s[d] += f(i, d);
+    }
+    return s;
+}
+
+
+void Foam::meshless::fsiCoupling::writeForces
+(
+    const scalar t,
+    const label nSub,
+    const UList<particleBody*>& solids,
+    const fluidModel& fluid,
+    const UList<const ghostBoundary*>& ghosts
+)
+{
+    if (!forces_.valid())
+    {
+        const Time& runTime = scene_.time();
+        const fileName dir =
+            runTime.globalPath()/"postProcessing"/"coupling"
+           /runTime.timeName(runTime.startTime().value());
+        mkDir(dir);
+        forces_.reset(new OFstream(dir/"forces.dat"));
+        OFstream& os = forces_();
+        os  << "# " << type() << " coupling: per solid, the fluid's force on"
+            << " the solid and the solid's force on the fluid (fluid's sum)"
+            << nl << "# time";
+        for (const particleBody* s : solids)
+        {
+            os  << tab << s->name() << ":onSolid(x y z)" << tab
+                << s->name() << ":onFluid(x y z)";
+        }
+        os  << tab << "subSteps" << endl;
+    }
+    OFstream& os = forces_();
+    os  << t;
+    forAll(solids, k)
+    {
+        const vector onSolid = total(solids[k]->model().solid()->externalForce());
+        const vector onFluid = fluid.forceOnFluid(*ghosts[k]);
+        for (direction d = 0; d < 3; ++d) os << tab << onSolid[d];
+        for (direction d = 0; d < 3; ++d) os << tab << onFluid[d];
+    }
+    os  << tab << nSub << endl;
 }
 
 

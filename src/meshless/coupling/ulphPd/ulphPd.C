@@ -7,7 +7,6 @@
 #include "fluidModel.H"
 #include "solidModel.H"
 #include "dictionaryChecks.H"
-#include "OSspecific.H"
 #include "addToRunTimeSelectionTable.H"
 #include <cmath>
 
@@ -51,18 +50,10 @@ Foam::meshless::couplings::ulphPd::ulphPd
             << ": expected none or step" << exit(FatalIOError);
     }
     const bool stepAcc = accType == "step";
-    const wordList solids(dict.get<wordList>("solids"));
-    if (solids.empty())
+    solidBodies_ = solidBodies();
+    for (particleBody* sbp : solidBodies_)
     {
-        FatalIOErrorInFunction(dict)
-            << "coupling ulphPd: 'solids' is empty: expected at least one"
-            << " solid body (" << bodyModel::modelsOf(bodyModel::modelRole::solid)
-            << ")" << exit(FatalIOError);
-    }
-    for (const word& name : solids)
-    {
-        particleBody& sb = solidBody(name);
-        solidBodies_.append(&sb);
+        particleBody& sb = *sbp;
         // Written when used (restart state of the solid's ghosts)
         stepAcceleration_.push_back
         (
@@ -85,6 +76,7 @@ Foam::meshless::couplings::ulphPd::ulphPd
         );
         ghosts_.back()->requestReaction();
         fluid_->addBoundary(*ghosts_.back());
+        boundaries_.append(ghosts_.back().get());
     }
 }
 
@@ -107,56 +99,6 @@ Foam::scalar Foam::meshless::couplings::ulphPd::maxDeltaT
 {
     maxCo_ = maxCo;
     return fluidBody_->maxDeltaT(maxCo);
-}
-
-
-Foam::vector Foam::meshless::couplings::ulphPd::total(const particleField& f)
-{
-    vector s(Zero);
-    for (label i = 0; i < f.size(); ++i)
-    {
-        for (label d = 0; d < f.nComponents(); ++d) s[d] += f(i, d);
-    }
-    return s;
-}
-
-
-void Foam::meshless::couplings::ulphPd::writeForces
-(
-    const scalar t,
-    const label nSub
-)
-{
-    if (!forces_.valid())
-    {
-        const Time& runTime = scene_.time();
-        const fileName dir =
-            runTime.globalPath()/"postProcessing"/"coupling"
-           /runTime.timeName(runTime.startTime().value());
-        mkDir(dir);
-        forces_.reset(new OFstream(dir/"forces.dat"));
-        OFstream& os = forces_();
-        os  << "# ulphPd coupling: per solid, the fluid's force on the solid"
-            << " and the solid's force on the fluid (fluid's sum)" << nl
-            << "# time";
-        for (const particleBody* s : solidBodies_)
-        {
-            os  << tab << s->name() << ":onSolid(x y z)" << tab
-                << s->name() << ":onFluid(x y z)";
-        }
-        os  << tab << "subSteps" << endl;
-    }
-    OFstream& os = forces_();
-    os  << t;
-    forAll(solidBodies_, k)
-    {
-        const vector onSolid =
-            total(solidBodies_[k]->model().solid()->externalForce());
-        const vector onFluid = fluid_->forceOnFluid(*ghosts_[k]);
-        for (direction d = 0; d < 3; ++d) os << tab << onSolid[d];
-        for (direction d = 0; d < 3; ++d) os << tab << onFluid[d];
-    }
-    os  << tab << nSub << endl;
 }
 
 
@@ -198,7 +140,7 @@ void Foam::meshless::couplings::ulphPd::advance
             a[c] = (U.data()[c] - U0[c])/dt;
         }
     }
-    writeForces(t + dt, nSub);
+    writeForces(t + dt, nSub, solidBodies_, *fluid_, boundaries_);
 }
 
 

@@ -201,6 +201,7 @@ void Foam::meshless::fluidModel::attach(ghostBoundary& ghosts, const bool wall)
 void Foam::meshless::fluidModel::addBoundary(ghostBoundary& ghosts)
 {
     attach(ghosts, false);
+    boundaryAdded(boundaries_.back());
     setContext();
 }
 

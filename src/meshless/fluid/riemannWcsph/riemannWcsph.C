@@ -193,10 +193,7 @@ void Foam::meshless::bodyModels::riemannWcsph::connectModel(particleScene&)
 
     // Pair geometry: x_ij, r, W (summation) and dW/dr (everything else)
     own_->cache(neighbourRelation::kernelGradient);
-    for (boundary& b : boundaries_)
-    {
-        b.toGhosts->cache(neighbourRelation::kernelGradient);
-    }
+    for (boundary& b : boundaries_) boundaryAdded(b);
 
     // Kernel sum of a full lattice at the body's spacing, self included
     const smoothingKernel& W = body_.kernel();
@@ -209,6 +206,217 @@ void Foam::meshless::bodyModels::riemannWcsph::connectModel(particleScene&)
         );
     });
     summationNorm_ = 1/(sigma0*std::pow(dx, body_.dim()));
+}
+
+
+void Foam::meshless::bodyModels::riemannWcsph::boundaryAdded(boundary& b)
+{
+    b.toGhosts->cache(neighbourRelation::kernelGradient);
+    if (b.ghosts->reaction())
+    {
+        b.fromGhosts->cache(neighbourRelation::kernelGradient);
+    }
+}
+
+
+bool Foam::meshless::bodyModels::riemannWcsph::anyReaction() const
+{
+    for (const boundary& b : boundaries_)
+    {
+        if (b.ghosts->reaction()) return true;
+    }
+    return false;
+}
+
+
+template<int Dim>
+void Foam::meshless::bodyModels::riemannWcsph::pressureReactions
+(
+    const double* rho,
+    const double* aPrior,
+    const double rho0c0,
+    const bool last
+)
+{
+    using namespace riemannEquations;
+    const label n = U_.size();
+    const double* B = correction_ == correctionType::none ? nullptr : B_.data();
+    for (size_t k = 0; k < boundaries_.size(); ++k)
+    {
+        boundary& b = boundaries_[k];
+        double* R = b.ghosts->reaction();
+        if (!R) continue;
+        const std::vector<double>& Rv = viscousReaction_[k];
+        std::copy(Rv.begin(), Rv.end(), R);
+        pressureReaction<Dim>
+        (
+            *b.fromGhosts, src_[k + 1], b.ghosts->V(), p_.data(), rho, B,
+            aPrior, V_.data(), R
+        );
+        if (!last) continue;
+
+        // The boundary's force on the fluid from the fluid's own terms:
+        // the momentum equation's sums over this boundary alone
+        aBoundary_.resize(size_t(n)*Dim);
+        drhoBoundary_.resize(n);
+        const pairSource& one = ctx_.sources[k + 1];
+        switch (correction_)
+        {
+            case correctionType::none:
+                gather(n, &one, 1, pressureTerm<Dim, pairing::none>
+                {
+                    src_.data() + k + 1, p_.data(), rho, B_.data(), aPrior,
+                    rho0c0, aBoundary_.data(), drhoBoundary_.data()
+                });
+                break;
+            case correctionType::KGC:
+                gather(n, &one, 1, pressureTerm<Dim, pairing::kgc>
+                {
+                    src_.data() + k + 1, p_.data(), rho, B_.data(), aPrior,
+                    rho0c0, aBoundary_.data(), drhoBoundary_.data()
+                });
+                break;
+            default:
+                gather(n, &one, 1, pressureTerm<Dim, pairing::rkgc>
+                {
+                    src_.data() + k + 1, p_.data(), rho, B_.data(), aPrior,
+                    rho0c0, aBoundary_.data(), drhoBoundary_.data()
+                });
+                break;
+        }
+        const double* m = mass_.data();
+        vectorD<Dim> f = vectorD<Dim>::Zero();
+        for (label i = 0; i < n; ++i) f += m[i]*cvec<Dim>(aBoundary_.data(), i);
+        b.forceOnFluid = Zero;
+        for (int d = 0; d < Dim; ++d) b.forceOnFluid[d] = f(d);
+    }
+}
+
+
+template<int Dim>
+void Foam::meshless::bodyModels::riemannWcsph::dissipationReactions
+(
+    const double* U,
+    const double* rho,
+    const double rho0c0,
+    const bool last
+)
+{
+    using namespace riemannEquations;
+    const label n = U_.size();
+    const double k3 = 3/c0_;
+    for (size_t k = 0; k < boundaries_.size(); ++k)
+    {
+        boundary& b = boundaries_[k];
+        double* R = b.ghosts->reaction();
+        if (!R) continue;
+        const sourceData& S = src_[k + 1];
+        const double* Vw = b.ghosts->V();
+        const neighbourRelation& rel = *b.fromGhosts;
+        const double* Vf = V_.data();
+        switch (limiter_)
+        {
+            case limiterType::compression:
+                dissipationReaction<Dim, limiterType::compression>
+                    (rel, S, Vw, U, rho0c0, k3, Vf, R);
+                break;
+            case limiterType::expansion:
+                dissipationReaction<Dim, limiterType::expansion>
+                    (rel, S, Vw, U, rho0c0, k3, Vf, R);
+                break;
+            case limiterType::full:
+                dissipationReaction<Dim, limiterType::full>
+                    (rel, S, Vw, U, rho0c0, k3, Vf, R);
+                break;
+            case limiterType::none:
+                break;
+        }
+        if (!last) continue;
+
+        aBoundary_.assign(size_t(n)*Dim, 0);
+        drhoBoundary_.assign(n, 0);
+        const pairSource& one = ctx_.sources[k + 1];
+        auto add = [&](auto term) { gather(n, &one, 1, term); };
+        switch (limiter_)
+        {
+            case limiterType::compression:
+                add(dissipationTerm<Dim, limiterType::compression>
+                {
+                    src_.data() + k + 1, U, rho, rho0c0, k3,
+                    aBoundary_.data(), drhoBoundary_.data()
+                });
+                break;
+            case limiterType::expansion:
+                add(dissipationTerm<Dim, limiterType::expansion>
+                {
+                    src_.data() + k + 1, U, rho, rho0c0, k3,
+                    aBoundary_.data(), drhoBoundary_.data()
+                });
+                break;
+            case limiterType::full:
+                add(dissipationTerm<Dim, limiterType::full>
+                {
+                    src_.data() + k + 1, U, rho, rho0c0, k3,
+                    aBoundary_.data(), drhoBoundary_.data()
+                });
+                break;
+            case limiterType::none:
+                break;
+        }
+
+        const double* m = mass_.data();
+        vectorD<Dim> f = vectorD<Dim>::Zero();
+        for (label i = 0; i < n; ++i) f += m[i]*cvec<Dim>(aBoundary_.data(), i);
+        for (int d = 0; d < Dim; ++d) b.forceOnFluid[d] += f(d);
+        b.forceOnFluid += viscousOnFluid_[k];
+    }
+}
+
+
+template<int Dim>
+void Foam::meshless::bodyModels::riemannWcsph::viscousReactions()
+{
+    using namespace riemannEquations;
+    const label n = U_.size();
+    viscousReaction_.resize(boundaries_.size());
+    viscousOnFluid_.assign(boundaries_.size(), Zero);
+    const double eps = 0.01*body_.kernel().h();
+    for (size_t k = 0; k < boundaries_.size(); ++k)
+    {
+        boundary& b = boundaries_[k];
+        if (!b.ghosts->reaction()) continue;
+        const label nw = b.fromGhosts->size();
+        std::vector<double>& R = viscousReaction_[k];
+        R.assign(size_t(nw)*Dim, 0);
+        const sourceData& S = src_[k + 1];
+        if (!viscosityEffect_ || !S.noSlip) continue;
+        const double* Vw = b.ghosts->V();
+        viscousReaction<Dim>
+        (
+            *b.fromGhosts, S, Vw, U_.data(), mass_.data(),
+            viscousFactor_.data(), eps, R.data()
+        );
+
+        // The same pairs from the fluid's side
+        const double* f = viscousFactor_.data();
+        const double* U = U_.data();
+        const double* m = mass_.data();
+        const label* off = b.toGhosts->offsetData();
+        const label* idx = b.toGhosts->indexData();
+        const double* r = b.toGhosts->r();
+        const double* dw = b.toGhosts->dw();
+        vectorD<Dim> F = vectorD<Dim>::Zero();
+        for (label i = 0; i < n; ++i)
+        {
+            for (label q = off[i]; q < off[i + 1]; ++q)
+            {
+                const label w = idx[q];
+                const double c = dw[q]*Vw[w]/(r[q] + eps);
+                F += (m[i]*f[i]*2*c)*(cvec<Dim>(U, i) - cvec<Dim>(S.U, w));
+            }
+        }
+        for (int d = 0; d < Dim; ++d) viscousOnFluid_[k][d] = F(d);
+    }
 }
 
 
@@ -452,19 +660,23 @@ void Foam::meshless::bodyModels::riemannWcsph::advanceDim
         );
     }
 
+    const bool react = anyReaction();
     if (viscosityEffect_)
     {
         costAccounting::scope timer(costs, body_.costPart(*viscosityEffect_));
-        gather
-        (
-            n, ctx_.sources,
-            viscousTerm<Dim>
-            {
-                src_.data(), U_.data(), rho_.data(), mu_, 0.01*h,
-                normaliseLaplacian_, aPrior_.data()
-            }
-        );
+        viscousTerm<Dim> term
+        {
+            src_.data(), U_.data(), rho_.data(), mu_, 0.01*h,
+            normaliseLaplacian_, aPrior_.data()
+        };
+        if (react)
+        {
+            viscousFactor_.resize(n);
+            term.factor = viscousFactor_.data();
+        }
+        gather(n, ctx_.sources, term);
     }
+    if (react) viscousReactions<Dim>();
 
     double* x = set.positions().data();
     if (transport_)
@@ -525,6 +737,7 @@ void Foam::meshless::bodyModels::riemannWcsph::advanceDim
         for (label k = 0; k < nv; ++k) x[k] += 0.5*dts*U[k];
 
         pressure<Dim>(rho, a0, rho0c0);
+        if (react) pressureReactions<Dim>(rho, a0, rho0c0, s == nAc - 1);
         #pragma omp parallel for schedule(static)
         for (label k = 0; k < nv; ++k) U[k] += dts*(aP[k] + aDc[k] + a0[k]);
 
@@ -532,7 +745,11 @@ void Foam::meshless::bodyModels::riemannWcsph::advanceDim
         #pragma omp parallel for schedule(static)
         for (label k = 0; k < nv; ++k) x[k] += 0.5*dts*U[k];
         dissipation<Dim>(U, rho, rho0c0);
+        if (react) dissipationReactions<Dim>(U, rho, rho0c0, s == nAc - 1);
         updateDensity(rho, drho, 0.5*dts, rho);
+
+        // A coupling's solids over the same acoustic step
+        if (innerStep_) innerStep_(ts, dts);
     }
 
     // The accelerations the next advection step is taken from
