@@ -192,9 +192,9 @@ void Foam::meshless::couplings::riemannTlsph::describe(Ostream& os) const
         os  << (k ? " " : "") << solidBodies_[k]->name();
     }
     os  << "), solid particles as the fluid's dummy particles with the"
-        << " velocity and acceleration of the last acoustic step, the"
-        << " reaction of the fluid's pair forces on the solids, solid steps"
-        << " after each acoustic step, minSubSteps "
+        << " velocity and acceleration of the acoustic step, the reaction"
+        << " of the fluid's pair forces on the solids, solid steps between"
+        << " the halves of each acoustic step, minSubSteps "
         << subSteps_.minSubSteps() << nl;
 }
 

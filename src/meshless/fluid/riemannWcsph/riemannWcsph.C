@@ -215,6 +215,13 @@ void Foam::meshless::bodyModels::riemannWcsph::boundaryAdded(boundary& b)
     if (b.ghosts->reaction())
     {
         b.fromGhosts->cache(neighbourRelation::kernelGradient);
+
+        // The reaction of the dissipation of the last acoustic step, which
+        // the next one applies, as the fluid its own (written: restart)
+        b.ghosts->ghostBody().particles().addField
+        (
+            "fluidDissipativeForce", particleField::kind::vector
+        );
     }
 }
 
@@ -247,7 +254,10 @@ void Foam::meshless::bodyModels::riemannWcsph::pressureReactions
         double* R = b.ghosts->reaction();
         if (!R) continue;
         const std::vector<double>& Rv = viscousReaction_[k];
-        std::copy(Rv.begin(), Rv.end(), R);
+        const particleField& Rd =
+            b.ghosts->ghostBody().particles().field("fluidDissipativeForce");
+        const label nR = Rv.size();
+        for (label c = 0; c < nR; ++c) R[c] = Rv[c] + Rd.data()[c];
         pressureReaction<Dim>
         (
             *b.fromGhosts, src_[k + 1], b.ghosts->V(), p_.data(), rho, B,
@@ -287,8 +297,8 @@ void Foam::meshless::bodyModels::riemannWcsph::pressureReactions
         const double* m = mass_.data();
         vectorD<Dim> f = vectorD<Dim>::Zero();
         for (label i = 0; i < n; ++i) f += m[i]*cvec<Dim>(aBoundary_.data(), i);
-        b.forceOnFluid = Zero;
-        for (int d = 0; d < Dim; ++d) b.forceOnFluid[d] = f(d);
+        b.forceOnFluid = viscousOnFluid_[k] + dissipativeOnFluid_[k];
+        for (int d = 0; d < Dim; ++d) b.forceOnFluid[d] += f(d);
     }
 }
 
@@ -298,8 +308,7 @@ void Foam::meshless::bodyModels::riemannWcsph::dissipationReactions
 (
     const double* U,
     const double* rho,
-    const double rho0c0,
-    const bool last
+    const double rho0c0
 )
 {
     using namespace riemannEquations;
@@ -308,8 +317,11 @@ void Foam::meshless::bodyModels::riemannWcsph::dissipationReactions
     for (size_t k = 0; k < boundaries_.size(); ++k)
     {
         boundary& b = boundaries_[k];
-        double* R = b.ghosts->reaction();
-        if (!R) continue;
+        if (!b.ghosts->reaction()) continue;
+        particleField& Rd =
+            b.ghosts->ghostBody().particles().field("fluidDissipativeForce");
+        Rd.fill(0);
+        double* R = Rd.data();
         const sourceData& S = src_[k + 1];
         const double* Vw = b.ghosts->V();
         const neighbourRelation& rel = *b.fromGhosts;
@@ -331,7 +343,6 @@ void Foam::meshless::bodyModels::riemannWcsph::dissipationReactions
             case limiterType::none:
                 break;
         }
-        if (!last) continue;
 
         aBoundary_.assign(size_t(n)*Dim, 0);
         drhoBoundary_.assign(n, 0);
@@ -367,8 +378,8 @@ void Foam::meshless::bodyModels::riemannWcsph::dissipationReactions
         const double* m = mass_.data();
         vectorD<Dim> f = vectorD<Dim>::Zero();
         for (label i = 0; i < n; ++i) f += m[i]*cvec<Dim>(aBoundary_.data(), i);
-        for (int d = 0; d < Dim; ++d) b.forceOnFluid[d] += f(d);
-        b.forceOnFluid += viscousOnFluid_[k];
+        dissipativeOnFluid_[k] = Zero;
+        for (int d = 0; d < Dim; ++d) dissipativeOnFluid_[k][d] = f(d);
     }
 }
 
@@ -380,6 +391,25 @@ void Foam::meshless::bodyModels::riemannWcsph::viscousReactions()
     const label n = U_.size();
     viscousReaction_.resize(boundaries_.size());
     viscousOnFluid_.assign(boundaries_.size(), Zero);
+    if (dissipativeOnFluid_.size() != boundaries_.size())
+    {
+        // A start or a restart: the carried reaction read (or zero), and
+        // its fluid's side, equal and opposite
+        dissipativeOnFluid_.assign(boundaries_.size(), Zero);
+        for (size_t k = 0; k < boundaries_.size(); ++k)
+        {
+            if (!boundaries_[k].ghosts->reaction()) continue;
+            const particleField& Rd = boundaries_[k].ghosts->ghostBody()
+                .particles().field("fluidDissipativeForce");
+            for (label i = 0; i < Rd.size(); ++i)
+            {
+                for (label d = 0; d < Rd.nComponents(); ++d)
+                {
+                    dissipativeOnFluid_[k][d] -= Rd(i, d);
+                }
+            }
+        }
+    }
     const double eps = 0.01*body_.kernel().h();
     for (size_t k = 0; k < boundaries_.size(); ++k)
     {
@@ -741,15 +771,18 @@ void Foam::meshless::bodyModels::riemannWcsph::advanceDim
         #pragma omp parallel for schedule(static)
         for (label k = 0; k < nv; ++k) U[k] += dts*(aP[k] + aDc[k] + a0[k]);
 
+        // A coupling's solids over the same acoustic step, with the
+        // reaction of the forces that moved the fluid (the dissipation's
+        // of the last step, as the fluid's own), so that the second half
+        // sees their velocity over this step
+        if (innerStep_) innerStep_(ts, dts);
+
         // Second half: position to the full step, continuity, dissipation
         #pragma omp parallel for schedule(static)
         for (label k = 0; k < nv; ++k) x[k] += 0.5*dts*U[k];
         dissipation<Dim>(U, rho, rho0c0);
-        if (react) dissipationReactions<Dim>(U, rho, rho0c0, s == nAc - 1);
+        if (react) dissipationReactions<Dim>(U, rho, rho0c0);
         updateDensity(rho, drho, 0.5*dts, rho);
-
-        // A coupling's solids over the same acoustic step
-        if (innerStep_) innerStep_(ts, dts);
     }
 
     // The accelerations the next advection step is taken from
