@@ -45,7 +45,7 @@ from caseTest import (copy_case, run, run_parts, run_steps,  # noqa
                       run_tutorial, set_entry)
 from foamCloud import read_cloud, times  # noqa: E402
 from foamMonitor import monitor_rows, run_cost  # noqa: E402
-from fsiChecks import energy_total, momentum_exchange  # noqa: E402
+from fsiChecks import energy_total, plate_force_checks  # noqa: E402
 
 H, W, G, RHO = 0.1, 0.2, 9.81, 1000.0
 
@@ -57,20 +57,8 @@ def hydrostatic(t, work):
                                   "riemannSphFoam"))
     if not ok:
         return
-    t.check("log names the coupling",
-            "coupling riemannTlsph: fluid water, solids (plate)" in out)
-
-    forces = monitor_rows(case, "coupling", "forces.dat")[1]
-    t.check("forces written every step", len(forces) > 300)
-    late = [r for r in forces if r[0] >= 0.1]
-    mean = sum(r[2] for r in late) / len(late)
-    expected = -RHO * G * H * W
-    t.check_close("mean vertical force on the plate (0.1-0.5 s) %.2f N/m"
-                  " vs -rho g H W = %.2f N/m" % (mean, expected),
-                  mean, expected, 0.03)
-    worst = momentum_exchange(case)
-    t.check("fluid-on-solid + solid-on-fluid = 0 (worst %.1e of the"
-            " force)" % worst, worst < 1e-9)
+    forces = plate_force_checks(t, case, out, "riemannTlsph", 300,
+                                -RHO * G * H * W)
     sub = [r[7] for r in forces]
     coupling = run_cost(case)["subSteps"].get("coupling")
     t.check("run cost reports the coupling's solid steps per acoustic "

@@ -26,8 +26,8 @@ here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(here), "lib"))
 from caseTest import copy_case, run_parts, run_steps  # noqa: E402
 from foamCloud import read_cloud, times  # noqa: E402
-from foamMonitor import monitor_rows, run_cost  # noqa: E402
-from fsiChecks import energy_total, momentum_exchange  # noqa: E402
+from foamMonitor import run_cost  # noqa: E402
+from fsiChecks import energy_total, plate_force_checks  # noqa: E402
 
 H, W, DX, G, RHO = 0.1, 0.2, 0.005, 9.81, 1000.0
 
@@ -38,20 +38,8 @@ def hydrostatic(t, work):
     ok, out = run_steps(t, case)
     if not ok:
         return
-    t.check("log names the coupling",
-            "coupling ulphPd: fluid water, solids (plate)" in out)
-
-    forces = monitor_rows(case, "coupling", "forces.dat")[1]
-    t.check("forces written every step", len(forces) > 1000)
-    late = [r for r in forces if r[0] >= 0.1]
-    mean = sum(r[2] for r in late) / len(late)
-    expected = -RHO * G * H * W
-    t.check_close("mean vertical force on the plate (0.1-0.5 s) %.2f N/m"
-                  " vs -rho g H W = %.2f N/m" % (mean, expected),
-                  mean, expected, 0.03)
-    worst = momentum_exchange(case)
-    t.check("fluid-on-solid + solid-on-fluid = 0 (worst %.1e of the"
-            " force)" % worst, worst < 1e-9)
+    forces = plate_force_checks(t, case, out, "ulphPd", 1000,
+                                -RHO * G * H * W)
     sub = [r[7] for r in forces]
     t.check("solid sub-steps > 1 (E = 100 MPa is stiffer than the"
             " water's c0)", min(sub) > 1)
