@@ -245,8 +245,7 @@ void Foam::meshless::bodyModels::riemannWcsph::pressureReactions
     const bool last
 )
 {
-    using namespace riemannEquations;
-    const label n = U_.size();
+    using riemannEquations::pressureReaction;
     const double* B = correction_ == correctionType::none ? nullptr : B_.data();
     for (size_t k = 0; k < boundaries_.size(); ++k)
     {
@@ -267,38 +266,9 @@ void Foam::meshless::bodyModels::riemannWcsph::pressureReactions
 
         // The boundary's force on the fluid from the fluid's own terms:
         // the momentum equation's sums over this boundary alone
-        aBoundary_.resize(size_t(n)*Dim);
-        drhoBoundary_.resize(n);
-        const pairSource& one = ctx_.sources[k + 1];
-        switch (correction_)
-        {
-            case correctionType::none:
-                gather(n, &one, 1, pressureTerm<Dim, pairing::none>
-                {
-                    src_.data() + k + 1, p_.data(), rho, B_.data(), aPrior,
-                    rho0c0, aBoundary_.data(), drhoBoundary_.data()
-                });
-                break;
-            case correctionType::KGC:
-                gather(n, &one, 1, pressureTerm<Dim, pairing::kgc>
-                {
-                    src_.data() + k + 1, p_.data(), rho, B_.data(), aPrior,
-                    rho0c0, aBoundary_.data(), drhoBoundary_.data()
-                });
-                break;
-            default:
-                gather(n, &one, 1, pressureTerm<Dim, pairing::rkgc>
-                {
-                    src_.data() + k + 1, p_.data(), rho, B_.data(), aPrior,
-                    rho0c0, aBoundary_.data(), drhoBoundary_.data()
-                });
-                break;
-        }
-        const double* m = mass_.data();
-        vectorD<Dim> f = vectorD<Dim>::Zero();
-        for (label i = 0; i < n; ++i) f += m[i]*cvec<Dim>(aBoundary_.data(), i);
-        b.forceOnFluid = viscousOnFluid_[k] + dissipativeOnFluid_[k];
-        for (int d = 0; d < Dim; ++d) b.forceOnFluid[d] += f(d);
+        pressure<Dim>(rho, aPrior, rho0c0, k);
+        b.forceOnFluid =
+            boundaryForce<Dim>() + viscousOnFluid_[k] + dissipativeOnFluid_[k];
     }
 }
 
@@ -311,76 +281,25 @@ void Foam::meshless::bodyModels::riemannWcsph::dissipationReactions
     const double rho0c0
 )
 {
-    using namespace riemannEquations;
-    const label n = U_.size();
-    const double k3 = 3/c0_;
     for (size_t k = 0; k < boundaries_.size(); ++k)
     {
-        boundary& b = boundaries_[k];
-        if (!b.ghosts->reaction()) continue;
-        particleField& Rd =
-            b.ghosts->ghostBody().particles().field("fluidDissipativeForce");
-        Rd.fill(0);
-        double* R = Rd.data();
-        const sourceData& S = src_[k + 1];
-        const double* Vw = b.ghosts->V();
-        const neighbourRelation& rel = *b.fromGhosts;
-        const double* Vf = V_.data();
-        switch (limiter_)
-        {
-            case limiterType::compression:
-                dissipationReaction<Dim, limiterType::compression>
-                    (rel, S, Vw, U, rho0c0, k3, Vf, R);
-                break;
-            case limiterType::expansion:
-                dissipationReaction<Dim, limiterType::expansion>
-                    (rel, S, Vw, U, rho0c0, k3, Vf, R);
-                break;
-            case limiterType::full:
-                dissipationReaction<Dim, limiterType::full>
-                    (rel, S, Vw, U, rho0c0, k3, Vf, R);
-                break;
-            case limiterType::none:
-                break;
-        }
-
-        aBoundary_.assign(size_t(n)*Dim, 0);
-        drhoBoundary_.assign(n, 0);
-        const pairSource& one = ctx_.sources[k + 1];
-        auto add = [&](auto term) { gather(n, &one, 1, term); };
-        switch (limiter_)
-        {
-            case limiterType::compression:
-                add(dissipationTerm<Dim, limiterType::compression>
-                {
-                    src_.data() + k + 1, U, rho, rho0c0, k3,
-                    aBoundary_.data(), drhoBoundary_.data()
-                });
-                break;
-            case limiterType::expansion:
-                add(dissipationTerm<Dim, limiterType::expansion>
-                {
-                    src_.data() + k + 1, U, rho, rho0c0, k3,
-                    aBoundary_.data(), drhoBoundary_.data()
-                });
-                break;
-            case limiterType::full:
-                add(dissipationTerm<Dim, limiterType::full>
-                {
-                    src_.data() + k + 1, U, rho, rho0c0, k3,
-                    aBoundary_.data(), drhoBoundary_.data()
-                });
-                break;
-            case limiterType::none:
-                break;
-        }
-
-        const double* m = mass_.data();
-        vectorD<Dim> f = vectorD<Dim>::Zero();
-        for (label i = 0; i < n; ++i) f += m[i]*cvec<Dim>(aBoundary_.data(), i);
-        dissipativeOnFluid_[k] = Zero;
-        for (int d = 0; d < Dim; ++d) dissipativeOnFluid_[k][d] = f(d);
+        if (!boundaries_[k].ghosts->reaction()) continue;
+        dissipation<Dim>(U, rho, rho0c0, k);
+        dissipativeOnFluid_[k] = boundaryForce<Dim>();
     }
+}
+
+
+template<int Dim>
+Foam::vector Foam::meshless::bodyModels::riemannWcsph::boundaryForce() const
+{
+    const label n = U_.size();
+    const double* m = mass_.data();
+    vectorD<Dim> f = vectorD<Dim>::Zero();
+    for (label i = 0; i < n; ++i) f += m[i]*cvec<Dim>(aBoundary_.data(), i);
+    vector F(Zero);
+    for (int d = 0; d < Dim; ++d) F[d] = f(d);
+    return F;
 }
 
 
@@ -514,16 +433,34 @@ void Foam::meshless::bodyModels::riemannWcsph::pressure
 (
     const double* rho,
     const double* aPrior,
-    const double rho0c0
+    const double rho0c0,
+    const label k
 )
 {
+    typedef riemannEquations::pressureTerm<Dim, P> term;
+    const label n = U_.size();
+    if (k < 0)
+    {
+        gather
+        (
+            n, ctx_.sources,
+            term
+            {
+                src_.data(), p_.data(), rho, B_.data(), aPrior, rho0c0,
+                aP_.data(), drho_.data()
+            }
+        );
+        return;
+    }
+    aBoundary_.resize(size_t(n)*Dim);
+    drhoBoundary_.resize(n);
     gather
     (
-        U_.size(), ctx_.sources,
-        riemannEquations::pressureTerm<Dim, P>
+        n, &ctx_.sources[k + 1], 1,
+        term
         {
-            src_.data(), p_.data(), rho, B_.data(), aPrior, rho0c0,
-            aP_.data(), drho_.data()
+            src_.data() + k + 1, p_.data(), rho, B_.data(), aPrior, rho0c0,
+            aBoundary_.data(), drhoBoundary_.data()
         }
     );
 }
@@ -534,20 +471,21 @@ void Foam::meshless::bodyModels::riemannWcsph::pressure
 (
     const double* rho,
     const double* aPrior,
-    const double rho0c0
+    const double rho0c0,
+    const label k
 )
 {
     using riemannEquations::pairing;
     switch (correction_)
     {
         case correctionType::none:
-            pressure<Dim, pairing::none>(rho, aPrior, rho0c0);
+            pressure<Dim, pairing::none>(rho, aPrior, rho0c0, k);
             break;
         case correctionType::KGC:
-            pressure<Dim, pairing::kgc>(rho, aPrior, rho0c0);
+            pressure<Dim, pairing::kgc>(rho, aPrior, rho0c0, k);
             break;
         default:
-            pressure<Dim, pairing::rkgc>(rho, aPrior, rho0c0);
+            pressure<Dim, pairing::rkgc>(rho, aPrior, rho0c0, k);
             break;
     }
 }
@@ -558,15 +496,46 @@ void Foam::meshless::bodyModels::riemannWcsph::dissipation
 (
     const double* U,
     const double* rho,
-    const double rho0c0
+    const double rho0c0,
+    const label k
 )
 {
+    typedef riemannEquations::dissipationTerm<Dim, L> term;
+    const label n = U_.size();
+    if (k < 0)
+    {
+        gather
+        (
+            n, ctx_.sources,
+            term
+            {
+                src_.data(), U, rho, rho0c0, 3/c0_, aDiss_.data(),
+                drho_.data()
+            }
+        );
+        return;
+    }
+
+    // Boundary k both ways: its reaction into fluidDissipativeForce, the
+    // fluid's sum over it alone into aBoundary_
+    boundary& b = boundaries_[k];
+    particleField& Rd =
+        b.ghosts->ghostBody().particles().field("fluidDissipativeForce");
+    Rd.fill(0);
+    riemannEquations::dissipationReaction<Dim, L>
+    (
+        *b.fromGhosts, src_[k + 1], b.ghosts->V(), U, rho0c0, 3/c0_,
+        V_.data(), Rd.data()
+    );
+    aBoundary_.assign(size_t(n)*Dim, 0);
+    drhoBoundary_.assign(n, 0);
     gather
     (
-        U_.size(), ctx_.sources,
-        riemannEquations::dissipationTerm<Dim, L>
+        n, &ctx_.sources[k + 1], 1,
+        term
         {
-            src_.data(), U, rho, rho0c0, 3/c0_, aDiss_.data(), drho_.data()
+            src_.data() + k + 1, U, rho, rho0c0, 3/c0_, aBoundary_.data(),
+            drhoBoundary_.data()
         }
     );
 }
@@ -577,23 +546,24 @@ void Foam::meshless::bodyModels::riemannWcsph::dissipation
 (
     const double* U,
     const double* rho,
-    const double rho0c0
+    const double rho0c0,
+    const label k
 )
 {
     using riemannEquations::limiterType;
     switch (limiter_)
     {
         case limiterType::compression:
-            dissipation<Dim, limiterType::compression>(U, rho, rho0c0);
+            dissipation<Dim, limiterType::compression>(U, rho, rho0c0, k);
             break;
         case limiterType::expansion:
-            dissipation<Dim, limiterType::expansion>(U, rho, rho0c0);
+            dissipation<Dim, limiterType::expansion>(U, rho, rho0c0, k);
             break;
         case limiterType::full:
-            dissipation<Dim, limiterType::full>(U, rho, rho0c0);
+            dissipation<Dim, limiterType::full>(U, rho, rho0c0, k);
             break;
         case limiterType::none:
-            dissipation<Dim, limiterType::none>(U, rho, rho0c0);
+            dissipation<Dim, limiterType::none>(U, rho, rho0c0, k);
             break;
     }
 }
