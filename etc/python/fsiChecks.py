@@ -134,7 +134,7 @@ def velocity_noise(case, body, dx):
 
 
 def stability_checks(case, solid, tank, dx, energy_scale, fluid="water",
-                     velocity_scale=None, walls_top=None):
+                     velocity_scale=None, walls_top=None, solid_dx=None):
     """[(what, met)] for a run of the fluid 'fluid' on the solid 'solid':
     - the run reached endTime (the solver stops on a NaN or an escaped
       particle, naming both);
@@ -155,7 +155,9 @@ def stability_checks(case, solid, tank, dx, energy_scale, fluid="water",
       every written time (smooth deformation at impact: up to 0.045 of it
       in sluiceGate). The per-particle forces of a coupling excite the
       solid's odd-even modes; undamped they grow (2 m/s in the rubber gate
-      of elasticGate by 0.3 s) and throw fluid particles out."""
+      of elasticGate by 0.3 s) and throw fluid particles out.
+    dx is the fluid's spacing, solid_dx the solid's (default dx) when the
+    two differ (multi-resolution)."""
     series = times(case)
     t1 = series[-1][0]
     checks = [("ran to endTime %g s (last time %g s)" % (end_time(case), t1),
@@ -198,7 +200,7 @@ def stability_checks(case, solid, tank, dx, energy_scale, fluid="water",
     checks.append(("total energy not growing (largest rise %.3g J/m <= %.3g)"
                    % (rise, 1e-3 * energy_scale), rise <= 1e-3 * energy_scale))
     if velocity_scale is not None:
-        noise = velocity_noise(case, solid, dx)
+        noise = velocity_noise(case, solid, solid_dx or dx)
         checks.append(("the %s's particle-scale velocity noise %.3g m/s <"
                        " 0.1 x %.3g m/s" % (solid, noise, velocity_scale),
                        noise < 0.1 * velocity_scale))

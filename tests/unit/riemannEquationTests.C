@@ -33,6 +33,7 @@ Description
 #include <gtest/gtest.h>
 #include "testHelpers.H"
 #include "riemannEquations.H"
+#include "ghostBoundary.H"
 #include <cmath>
 #include <random>
 #include <functional>
@@ -410,3 +411,97 @@ TEST(riemannEquations, uniformPressureOnAFullLatticeExertsNoForce)
 
 
 // ************************************************************************* //
+
+
+TEST(riemannEquations, coarseGrainedFinerSolidSumsAsTheFluidsOwnLattice)
+{
+    // Fluid lattice (dx) for x < 0, a solid for x > 0 twice as fine; the
+    // density summation's kernel sum of the fluid's first rows, with the
+    // solid counted particle by particle and by cells of the fluid's
+    // spacing at their centroids (ghostBoundary::coarseGrain), against the
+    // fluid's lattice continued into the solid (what a single resolution
+    // sums). Sheared and stretched (an affine map), the centroids follow.
+    const double dx = 0.01, ds = 0.5*dx;
+    const autoPtr<smoothingKernel> W =
+        meshlessTest::kernel(2, dx, "type wendlandC2; smoothingLengthRatio 1.3;");
+    const label rows = 24, cols = 8;
+    std::vector<double> fluid, solid, coarse, Vs;
+    for (label j = 0; j < rows; ++j)
+    {
+        for (label i = 0; i < cols; ++i)
+        {
+            fluid.push_back(-(i + 0.5)*dx);
+            fluid.push_back((j + 0.5)*dx);
+            coarse.push_back((i + 0.5)*dx);
+            coarse.push_back((j + 0.5)*dx);
+        }
+        for (label i = 0; i < 2*cols; ++i)
+        {
+            for (label k = 0; k < 2; ++k)
+            {
+                solid.push_back((i + 0.5)*ds);
+                solid.push_back((2*j + k + 0.5)*ds);
+                Vs.push_back(ds*ds);
+            }
+        }
+    }
+    auto deform = [](std::vector<double>& p)
+    {
+        for (size_t a = 0; a < p.size()/2; ++a)
+        {
+            p[2*a + 1] += 0.3*p[2*a];
+            p[2*a] *= 1.1;
+        }
+    };
+    const std::vector<double> solid0(solid);
+    deform(fluid);
+    deform(solid);
+    deform(coarse);
+
+    const label ns = Vs.size();
+    std::vector<double> cell(ns), offset(2*ns);
+    const label nCells = ghostBoundary::cells
+    (
+        solid0.data(), ns, 2, ds, dx, cell.data()
+    );
+    EXPECT_EQ(nCells, rows*cols);
+    std::vector<double> cellV(nCells), cellSum(2*nCells);
+    ghostBoundary::centroidOffsets
+    (
+        solid.data(), Vs.data(), cell.data(), ns, 2, cellV, cellSum,
+        offset.data()
+    );
+
+    auto sum = [&](const double* xi, const std::vector<double>& p,
+                   const double V, const double* off)
+    {
+        double s = 0;
+        for (size_t b = 0; b < p.size()/2; ++b)
+        {
+            double r[2] = {p[2*b] - xi[0], p[2*b + 1] - xi[1]};
+            if (off)
+            {
+                r[0] += off[2*b];
+                r[1] += off[2*b + 1];
+            }
+            s += V*W->W(std::hypot(r[0], r[1]));
+        }
+        return s;
+    };
+    double cellsErr = 0, particlesErr = 0;
+    for (label j = 6; j < rows - 6; ++j)
+    {
+        for (label i = 0; i < 2; ++i)
+        {
+            const double* xi = fluid.data() + 2*(j*cols + i);
+            const double own = sum(xi, fluid, dx*dx, nullptr);
+            const double single = own + sum(xi, coarse, dx*dx, nullptr);
+            const double byCells = own + sum(xi, solid, ds*ds, offset.data());
+            const double byParticles = own + sum(xi, solid, ds*ds, nullptr);
+            cellsErr = max(cellsErr, std::abs(byCells/single - 1));
+            particlesErr = max(particlesErr, std::abs(byParticles/single - 1));
+        }
+    }
+    EXPECT_LT(cellsErr, 1e-12);
+    EXPECT_GT(particlesErr, 1e-2);      // 1.6 % on the undeformed lattice
+}

@@ -516,6 +516,63 @@ TEST(tlsph, checkerboardIsAZeroEnergyModeThatHourglassControlResists)
 }
 
 
+TEST(tlsph, viscousForceIsCentralDissipativeAndBlindToRigidMotion)
+{
+    // A jittered block, rotated by 40 degrees and stretched (current
+    // positions), with velocities: a rigid motion (translation and
+    // rotation about a point), and a rigid motion with noise
+    const label nSide = 12;
+    const double dx = 0.01, eta = 50;
+    const block<2> b(nSide, dx, 0.2);
+    const double c = std::cos(0.7), s = std::sin(0.7);
+    const double A[4] = {1.1*c, -s, 1.1*s, c};
+    const std::vector<double> x = affine(b, A);
+    const double omega = 3, u0[2] = {0.4, -0.2}, centre[2] = {0.05, 0.02};
+    std::vector<double> rigid(x.size()), noisy(x.size());
+    unsigned seed = 7;
+    for (label a = 0; a < b.n; ++a)
+    {
+        rigid[2*a] = u0[0] - omega*(x[2*a + 1] - centre[1]);
+        rigid[2*a + 1] = u0[1] + omega*(x[2*a] - centre[0]);
+        for (int i = 0; i < 2; ++i)
+        {
+            seed = seed*1103515245u + 12345u;
+            noisy[2*a + i] = rigid[2*a + i] + 0.1*(double(seed % 2001)/1000 - 1);
+        }
+    }
+    const double scale = 8*eta*dx*dx*0.1/(dx*dx);  // 2(d+2) eta V du/dx^2 V
+
+    std::vector<double> f(x.size(), 0);
+    tlsphOperators::viscousForce<2>
+    (
+        b.pairs, b.V.data(), x.data(), rigid.data(), eta, f.data()
+    );
+    double worst = 0;
+    for (const double v : f) worst = max(worst, std::abs(v));
+    EXPECT_LT(worst/scale, 1e-12);      // no force in a rigid motion
+
+    std::fill(f.begin(), f.end(), 0);
+    tlsphOperators::viscousForce<2>
+    (
+        b.pairs, b.V.data(), x.data(), noisy.data(), eta, f.data()
+    );
+    double F[2] = {0, 0}, M = 0, power = 0, largest = 0;
+    for (label a = 0; a < b.n; ++a)
+    {
+        F[0] += f[2*a];
+        F[1] += f[2*a + 1];
+        M += x[2*a]*f[2*a + 1] - x[2*a + 1]*f[2*a];
+        power += noisy[2*a]*f[2*a] + noisy[2*a + 1]*f[2*a + 1];
+        largest = max(largest, std::hypot(f[2*a], f[2*a + 1]));
+    }
+    EXPECT_GT(largest/scale, 1e-2);     // the noise is resisted...
+    EXPECT_LT(std::hypot(F[0], F[1])/largest, 1e-12);   // momentum kept
+    EXPECT_LT(std::abs(M)/(largest*nSide*dx), 1e-12);  // angular too
+    EXPECT_LT(power, 0);                // ...and only dissipates
+
+}
+
+
 namespace
 {
 

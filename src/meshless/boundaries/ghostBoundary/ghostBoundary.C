@@ -6,6 +6,8 @@
 #include "dispatchDim.H"
 #include "correctionMatrix.H"
 #include <algorithm>
+#include <cmath>
+#include <map>
 
 const Foam::Enum<Foam::meshless::ghostBoundary::slipType>
 Foam::meshless::ghostBoundary::slipTypeNames
@@ -74,8 +76,105 @@ Foam::meshless::ghostBoundary::ghostBoundary
             prefixed(prefix, "S"), particleField::kind::tensor
         )
     ),
-    reaction_(nullptr)
+    reaction_(nullptr),
+    cell_(nullptr),
+    cellOffset_(nullptr)
 {}
+
+
+Foam::label Foam::meshless::ghostBoundary::cells
+(
+    const double* X,
+    const label n,
+    const label dim,
+    const scalar spacing,
+    const scalar dx,
+    double* cell
+)
+{
+    // Cells from the lowest corner of the particles' own cells
+    std::vector<double> lo(dim, GREAT);
+    for (label i = 0; i < n; ++i)
+    {
+        for (label d = 0; d < dim; ++d)
+        {
+            lo[d] = std::min(lo[d], X[i*dim + d] - 0.5*spacing);
+        }
+    }
+    // Cell numbers (a particle on a cell face goes to one side only)
+    std::map<std::vector<long>, label> number;
+    std::vector<long> key(dim);
+    for (label i = 0; i < n; ++i)
+    {
+        for (label d = 0; d < dim; ++d)
+        {
+            key[d] = long(std::floor((X[i*dim + d] - lo[d])/dx + 1e-9));
+        }
+        cell[i] = number.emplace(key, label(number.size())).first->second;
+    }
+    return number.size();
+}
+
+
+void Foam::meshless::ghostBoundary::centroidOffsets
+(
+    const double* x,
+    const double* V,
+    const double* cell,
+    const label n,
+    const label dim,
+    std::vector<double>& cellVolume,
+    std::vector<double>& cellSum,
+    double* offset
+)
+{
+    std::fill(cellVolume.begin(), cellVolume.end(), 0.0);
+    std::fill(cellSum.begin(), cellSum.end(), 0.0);
+    for (label i = 0; i < n; ++i)
+    {
+        const label k = label(cell[i]);
+        cellVolume[k] += V[i];
+        for (label d = 0; d < dim; ++d) cellSum[k*dim + d] += V[i]*x[i*dim + d];
+    }
+    for (label i = 0; i < n; ++i)
+    {
+        const label k = label(cell[i]);
+        for (label d = 0; d < dim; ++d)
+        {
+            offset[i*dim + d] = cellSum[k*dim + d]/cellVolume[k] - x[i*dim + d];
+        }
+    }
+}
+
+
+void Foam::meshless::ghostBoundary::coarseGrain(const scalar dx)
+{
+    particleSet& set = ghostBody_.particles();
+    const double* X =
+        set.found("X0") ? set.field("X0").data() : set.positions().data();
+    cell_ = &set.addScratchField("ghostCell", particleField::kind::scalar);
+    cellOffset_ =
+        &set.addScratchField("ghostCellOffset", particleField::kind::vector);
+    const label nCells = cells
+    (
+        X, set.size(), set.dim(), ghostBody_.spacing(), dx, cell_->data()
+    );
+    cellVolume_.assign(nCells, 0);
+    cellSum_.assign(nCells*set.dim(), 0);
+}
+
+
+const double* Foam::meshless::ghostBoundary::summationOffsets()
+{
+    if (!cell_) return nullptr;
+    const particleSet& set = ghostBody_.particles();
+    centroidOffsets
+    (
+        set.positions().data(), V0_.data(), cell_->data(), set.size(),
+        set.dim(), cellVolume_, cellSum_, cellOffset_->data()
+    );
+    return cellOffset_->data();
+}
 
 
 void Foam::meshless::ghostBoundary::requestReaction()

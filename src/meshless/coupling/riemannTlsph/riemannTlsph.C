@@ -46,6 +46,14 @@ Foam::meshless::couplings::riemannTlsph::riemannTlsph
             Enum<bool>({{false, "none"}, {true, "average"}}), false
         )
     ),
+    coarseSummation_
+    (
+        readEnumOrDefault
+        (
+            dict, "densitySummation",
+            Enum<bool>({{true, "cells"}, {false, "particles"}}), true
+        )
+    ),
     stepMost_(0),
     costs_(nullptr)
 {
@@ -92,6 +100,10 @@ Foam::meshless::couplings::riemannTlsph::riemannTlsph
             )
         );
         ghosts_.back()->requestReaction();
+        if (coarseSummation_ && sb->spacing() < 0.999*fluidBody_->spacing())
+        {
+            ghosts_.back()->coarseGrain(fluidBody_->spacing());
+        }
         fluid_->addBoundary(*ghosts_.back());
         boundaries_.append(ghosts_.back().get());
     }
@@ -195,7 +207,8 @@ void Foam::meshless::couplings::riemannTlsph::describe(Ostream& os) const
         << " velocity and acceleration of the acoustic step, the reaction"
         << " of the fluid's pair forces on the solids, solid steps between"
         << " the halves of each acoustic step, minSubSteps "
-        << subSteps_.minSubSteps() << nl;
+        << subSteps_.minSubSteps() << ", densitySummation "
+        << (coarseSummation_ ? "cells" : "particles") << nl;
 }
 
 

@@ -377,7 +377,7 @@ void Foam::meshless::bodyModels::riemannWcsph::setSources()
     src_[0] = sourceData
     {
         true, p_.data(), B_.data(), U_.data(), nullptr, nullptr, true,
-        clipWallPressure_, nullptr
+        clipWallPressure_, nullptr, nullptr
     };
     for (size_t k = 0; k < boundaries_.size(); ++k)
     {
@@ -385,7 +385,7 @@ void Foam::meshless::bodyModels::riemannWcsph::setSources()
         src_[k + 1] = sourceData
         {
             false, nullptr, nullptr, g.U(), g.accelerations(), g.normals(),
-            g.slipNormals() == nullptr, clipWallPressure_, nullptr
+            g.slipNormals() == nullptr, clipWallPressure_, nullptr, nullptr
         };
     }
 }
@@ -414,13 +414,18 @@ void Foam::meshless::bodyModels::riemannWcsph::reinitialiseDensity()
 {
     using namespace riemannEquations;
     const label n = rho_.size();
+    for (size_t k = 0; k < boundaries_.size(); ++k)
+    {
+        src_[k + 1].offset = boundaries_[k].ghosts->summationOffsets();
+    }
     gather
     (
         n, ctx_.sources,
         summationTerm<Dim>
         {
             src_.data(), mass_.data(), V0_.data(), aPrior_.data(),
-            body_.kernel().W(0), summationNorm_, rho0_, c0_*c0_,
+            &body_.kernel(), body_.kernel().W(0), summationNorm_, rho0_,
+            c0_*c0_,
             freeSurface_, rho_.data()
         }
     );

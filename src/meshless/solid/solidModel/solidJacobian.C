@@ -13,7 +13,8 @@ Foam::meshless::solidJacobian::solidJacobian
     const neighbourRelation& pairs,
     const label dim,
     const std::vector<char>& free,
-    const std::vector<label>& mirror
+    const std::vector<label>& mirror,
+    const bool pairVelocity
 )
 :
     n_(pairs.size()),
@@ -24,6 +25,8 @@ Foam::meshless::solidJacobian::solidJacobian
     reach_(),
     K_(n_*dim, n_*dim),
     D_(n_*dim, 0),
+    C_(n_*dim, n_*dim),
+    pairVelocity_(pairVelocity),
     J_(),
     lu_(),
     analysed_(false),
@@ -129,41 +132,59 @@ void Foam::meshless::solidJacobian::assemble
     std::vector<triplet> entries;
     entries.reserve(reach_.size()*dim_*dim_);
 
-    for (const std::vector<label>& members : colours_)
+    // -da/dx (offset 0) or -da/du (offset dim) by colours into M
+    auto differences = [&]
+    (
+        const int offset,
+        const double e,
+        Eigen::SparseMatrix<double>& M
+    )
     {
-        for (int d = 0; d < dim_; ++d)
+        entries.clear();
+        for (const std::vector<label>& members : colours_)
         {
-            const double* a = evaluate(members, d, eps);
-            for (const label k : members)
+            for (int d = 0; d < dim_; ++d)
             {
-                const label col = k*dim_ + d;
-                for (label r = reachStart_[k]; r < reachStart_[k + 1]; ++r)
+                const double* a = evaluate(members, offset + d, e);
+                for (const label k : members)
                 {
-                    const label i = reach_[r];
-                    if (!free_[i]) continue;
-                    for (int e = 0; e < dim_; ++e)
+                    const label col = k*dim_ + d;
+                    for (label r = reachStart_[k]; r < reachStart_[k + 1]; ++r)
                     {
-                        const label row = i*dim_ + e;
-                        const double v = -(a[row] - a0[row])/eps;
-                        if (v != 0) entries.emplace_back(row, col, v);
+                        const label i = reach_[r];
+                        if (!free_[i]) continue;
+                        for (int c = 0; c < dim_; ++c)
+                        {
+                            const label row = i*dim_ + c;
+                            const double v = -(a[row] - a0[row])/e;
+                            if (v != 0) entries.emplace_back(row, col, v);
+                        }
                     }
                 }
             }
         }
-    }
-    K_.setZero();
-    K_.setFromTriplets(entries.begin(), entries.end());
-    K_.makeCompressed();
+        M.setZero();
+        M.setFromTriplets(entries.begin(), entries.end());
+        M.makeCompressed();
+    };
+    differences(0, eps, K_);
 
-    // The velocity dependence, taken as diagonal
-    const std::vector<label> none;
-    const double* a = evaluate(none, -1, epsU);
-    for (label i = 0; i < n_; ++i)
+    if (pairVelocity_)
     {
-        for (int e = 0; e < dim_; ++e)
+        differences(dim_, epsU, C_);
+    }
+    else
+    {
+        // The velocity dependence, taken as diagonal
+        const std::vector<label> none;
+        const double* a = evaluate(none, -1, epsU);
+        for (label i = 0; i < n_; ++i)
         {
-            const label row = i*dim_ + e;
-            D_[row] = free_[i] ? -(a[row] - a0[row])/epsU : 0;
+            for (int e = 0; e < dim_; ++e)
+            {
+                const label row = i*dim_ + e;
+                D_[row] = free_[i] ? -(a[row] - a0[row])/epsU : 0;
+            }
         }
     }
     ++assemblies_;
@@ -182,9 +203,17 @@ bool Foam::meshless::solidJacobian::factorise
     S.reserve(Eigen::VectorXi::Constant(nv, 1));
     for (label k = 0; k < nv; ++k)
     {
-        S.insert(k, k) = shiftX + (free_[k/dim_] ? shiftU*D_[k] : 0);
+        S.insert(k, k) =
+            shiftX + (free_[k/dim_] && !pairVelocity_ ? shiftU*D_[k] : 0);
     }
-    J_ = K_ + S;
+    if (pairVelocity_)
+    {
+        J_ = K_ + shiftU*C_ + S;
+    }
+    else
+    {
+        J_ = K_ + S;
+    }
     J_.makeCompressed();
     if (!lu_ || !analysed_)
     {

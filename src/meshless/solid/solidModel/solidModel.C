@@ -189,7 +189,11 @@ Foam::scalar Foam::meshless::solidModel::stableDeltaT
     // Newmark's average acceleration is unconditionally stable: the step
     // is the scene's (the fluid's, or controlDict's deltaT or maxDeltaT)
     if (implicit()) return GREAT;
-    return maxCo*body_.kernel().h()/(waveSpeed() + U_.maxMagnitude());
+    return min
+    (
+        maxCo*body_.kernel().h()/(waveSpeed() + U_.maxMagnitude()),
+        viscousDeltaT()
+    );
 }
 
 
@@ -332,7 +336,10 @@ void Foam::meshless::solidModel::assembleJacobian
             free[i] = constraints_->isFree(i);
             mirror[i] = constraints_->partner(i);
         }
-        jacobian_.reset(new solidJacobian(*pairs, dim, free, mirror));
+        jacobian_.reset
+        (
+            new solidJacobian(*pairs, dim, free, mirror, pairDamping())
+        );
     }
 
     particleField& xf = set.positions();
@@ -360,6 +367,10 @@ void Foam::meshless::solidModel::assembleJacobian
         if (d < 0)
         {
             for (label k = 0; k < nv; ++k) U[k] += e;
+        }
+        else if (d >= dim)
+        {
+            for (const label k : members) U[k*dim + d - dim] += e;
         }
         else
         {

@@ -39,6 +39,7 @@ Foam::meshless::bodyModels::tlsph::tlsph
             readNonNegativeOrDefault(dict, "hourglassControl", 0)
         )
     ),
+    viscosity_(readNonNegativeOrDefault(dict, "viscosity", 0)),
     taylor_(false),
     c_(std::sqrt(law_->waveModulus()/body.density()))
 {
@@ -180,6 +181,15 @@ void Foam::meshless::bodyModels::tlsph::stabilisation(double* f)
             *ref_, H_.data(), gradStress_.data(), f
         );
     }
+    if (viscosity_ > 0)
+    {
+        tlsphOperators::viscousForce<Dim>
+        (
+            *ref_, V0_.data(), body_.particles().positions().data(),
+            U_.data(), viscosity_, f,
+            image_.empty() ? nullptr : image_.data()
+        );
+    }
     if (hourglass_ > 0)
     {
         tlsphOperators::hourglassForce<Dim>
@@ -249,9 +259,18 @@ void Foam::meshless::bodyModels::tlsph::adjustForce(double* f)
 }
 
 
+Foam::scalar Foam::meshless::bodyModels::tlsph::viscousDeltaT() const
+{
+    if (viscosity_ <= 0) return GREAT;
+    const scalar h = body_.kernel().h();
+    return 0.125*body_.density()*h*h/((body_.dim() + 2)*viscosity_);
+}
+
+
 void Foam::meshless::bodyModels::tlsph::describeModel(Ostream& os) const
 {
     os  << ", hourglassControl " << hourglass_;
+    if (viscosity_ > 0) os << ", viscosity " << viscosity_ << " Pa s";
     if (taylor_) os << ", Taylor nodal integration";
 }
 
