@@ -28,10 +28,7 @@ Foam::meshless::couplings::riemannTlsph::riemannTlsph
     particleScene& scene
 )
 :
-    fsiCoupling(dict, scene),
-    fluidBody_(&fluidBody("fluid")),
-    fluid_(fluidBody_->model().fluid()),
-    solidBodies_(solidBodies()),
+    ghostCoupling(dict, scene),
     subSteps_
     (
         "coupling riemannTlsph",
@@ -91,50 +88,20 @@ Foam::meshless::couplings::riemannTlsph::riemannTlsph
         const label nv = set.size()*sb->dim();
         x0_.emplace_back(nv);
         U0_.emplace_back(nv);
-        ghosts_.emplace_back
+        deformingGhost& g = addGhosts
         (
-            new deformingGhost
-            (
-                *sb, wallAcceleration_ ? "averageAcceleration" : "",
-                "averageVelocity"
-            )
+            *sb, wallAcceleration_ ? "averageAcceleration" : "",
+            "averageVelocity"
         );
-        ghosts_.back()->requestReaction();
         if (coarseSummation_ && sb->spacing() < 0.999*fluidBody_->spacing())
         {
-            ghosts_.back()->coarseGrain(fluidBody_->spacing());
+            g.coarseGrain(fluidBody_->spacing());
         }
-        fluid_->addBoundary(*ghosts_.back());
-        boundaries_.append(ghosts_.back().get());
     }
     fluid_->setInnerStep
     (
         [this](const scalar t, const scalar dt) { acousticStep(t, dt); }
     );
-}
-
-
-bool Foam::meshless::couplings::riemannTlsph::couples
-(
-    const particleBody& b
-) const
-{
-    if (&b == fluidBody_) return true;
-    for (const particleBody* s : solidBodies_)
-    {
-        if (&b == s) return true;
-    }
-    return false;
-}
-
-
-Foam::scalar Foam::meshless::couplings::riemannTlsph::maxDeltaT
-(
-    const scalar maxCo
-) const
-{
-    maxCo_ = maxCo;
-    return fluidBody_->maxDeltaT(maxCo);
 }
 
 

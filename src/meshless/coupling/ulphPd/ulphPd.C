@@ -29,9 +29,7 @@ Foam::meshless::couplings::ulphPd::ulphPd
     particleScene& scene
 )
 :
-    fsiCoupling(dict, scene),
-    fluidBody_(&fluidBody("fluid")),
-    fluid_(fluidBody_->model().fluid()),
+    ghostCoupling(dict, scene),
     subSteps_
     (
         "coupling ulphPd",
@@ -50,7 +48,6 @@ Foam::meshless::couplings::ulphPd::ulphPd
             << ": expected none or step" << exit(FatalIOError);
     }
     const bool stepAcc = accType == "step";
-    solidBodies_ = solidBodies();
     for (particleBody* sbp : solidBodies_)
     {
         particleBody& sb = *sbp;
@@ -70,35 +67,8 @@ Foam::meshless::couplings::ulphPd::ulphPd
             )
         );
         U0_.emplace_back(sb.particles().size()*sb.dim());
-        ghosts_.emplace_back
-        (
-            new deformingGhost(sb, stepAcc ? "stepAcceleration" : "")
-        );
-        ghosts_.back()->requestReaction();
-        fluid_->addBoundary(*ghosts_.back());
-        boundaries_.append(ghosts_.back().get());
+        addGhosts(sb, stepAcc ? "stepAcceleration" : "");
     }
-}
-
-
-bool Foam::meshless::couplings::ulphPd::couples(const particleBody& b) const
-{
-    if (&b == fluidBody_) return true;
-    for (const particleBody* s : solidBodies_)
-    {
-        if (&b == s) return true;
-    }
-    return false;
-}
-
-
-Foam::scalar Foam::meshless::couplings::ulphPd::maxDeltaT
-(
-    const scalar maxCo
-) const
-{
-    maxCo_ = maxCo;
-    return fluidBody_->maxDeltaT(maxCo);
 }
 
 

@@ -1,0 +1,59 @@
+/*---------------------------------------------------------------------------*\
+  meshlessFoam: meshless fluid-structure interaction inside OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "ghostCoupling.H"
+#include "particleScene.H"
+#include "fluidModel.H"
+
+Foam::meshless::ghostCoupling::ghostCoupling
+(
+    const dictionary& dict,
+    particleScene& scene
+)
+:
+    fsiCoupling(dict, scene),
+    fluidBody_(&fluidBody("fluid")),
+    fluid_(fluidBody_->model().fluid()),
+    solidBodies_(solidBodies())
+{}
+
+
+Foam::meshless::deformingGhost& Foam::meshless::ghostCoupling::addGhosts
+(
+    particleBody& sb,
+    const word& accName,
+    const word& velocityName
+)
+{
+    ghosts_.emplace_back(new deformingGhost(sb, accName, velocityName));
+    deformingGhost& g = *ghosts_.back();
+    g.requestReaction();
+    fluid_->addBoundary(g);
+    boundaries_.append(&g);
+    return g;
+}
+
+
+bool Foam::meshless::ghostCoupling::couples(const particleBody& b) const
+{
+    if (&b == fluidBody_) return true;
+    for (const particleBody* s : solidBodies_)
+    {
+        if (&b == s) return true;
+    }
+    return false;
+}
+
+
+Foam::scalar Foam::meshless::ghostCoupling::maxDeltaT
+(
+    const scalar maxCo
+) const
+{
+    maxCo_ = maxCo;
+    return fluidBody_->maxDeltaT(maxCo);
+}
+
+
+// ************************************************************************* //
