@@ -41,7 +41,6 @@ const Foam::Enum<Foam::meshless::bodyModels::isph::wallPressureType>
 Foam::meshless::bodyModels::isph::wallPressureNames
 ({
     { wallPressureType::pairwise, "pairwise" },
-    { wallPressureType::interpolated, "interpolated" },
     { wallPressureType::implicit, "implicit" },
 });
 
@@ -106,10 +105,13 @@ Foam::meshless::bodyModels::isph::isph
         )
     ),
     wallUnknowns_(wallPressure_ == wallPressureType::implicit),
-    wallDry_(dict.getOrDefault<bool>("dryWalls", true)),
     densityRelax_
     (
         readNonNegativeOrDefault(dict, "densityInvariantRelaxation", 0)
+    ),
+    densityCompressionOnly_
+    (
+        dict.getOrDefault<bool>("densityInvariantCompressionOnly", false)
     ),
     solver_
     (
@@ -426,8 +428,13 @@ void Foam::meshless::bodyModels::isph::advanceDim
             const double* ratio = densityRatio_.data();
             double* div = divU_.data();
             const double c = densityRelax_/dt;
+            const bool compressionOnly = densityCompressionOnly_;
             #pragma omp parallel for schedule(static)
-            for (label i = 0; i < n; ++i) div[i] += c*(1 - ratio[i]);
+            for (label i = 0; i < n; ++i)
+            {
+                const double e = 1 - ratio[i];
+                div[i] += c*(compressionOnly ? std::min(0.0, e) : e);
+            }
         }
         rhs_.fill(0);
         const double* Bc = consistent_ ? B_.data() : nullptr;
@@ -467,8 +474,7 @@ void Foam::meshless::bodyModels::isph::advanceDim
                     wallBlock
                     {
                         b.toGhosts, b.fromGhosts, b.ghosts->V(),
-                        b.ghosts->accelerations(), wallOffset_[k],
-                        src_[k + 1].pWall
+                        b.ghosts->accelerations(), wallOffset_[k]
                     }
                 );
             }
@@ -531,16 +537,6 @@ void Foam::meshless::bodyModels::isph::advanceDim
                 pAll_.begin() + wallOffset_[k] + pw.size(),
                 pw.data()
             );
-        }
-    }
-    if (wallPressure_ == wallPressureType::interpolated)
-    {
-        // Adami's wall pressure from the water's new pressure at x*, for
-        // the projection: the Shepard average plus the head (ghostBoundary)
-        interpolateBoundaries();
-        for (size_t k = 0; k < boundaries_.size(); ++k)
-        {
-            src_[k + 1].pSolved = boundaries_[k].ghosts->p();
         }
     }
     Info<< "    " << body_.name() << ": pressure " << last_.solver << ", "
@@ -697,7 +693,7 @@ void Foam::meshless::bodyModels::isph::advance
         bAll_.resize(N);
         for (size_t k = 0; k < boundaries_.size(); ++k)
         {
-            if (!wallDry_) src_[k + 1].pWall = nullptr;
+            src_[k + 1].pWall = nullptr;
             src_[k + 1].pSolved = pAll_.data() + wallOffset_[k];
         }
     }
