@@ -147,6 +147,45 @@ def consistent(t, work):
             " sqrt(gH)" % (largest / scale), largest < 3e-3 * scale)
 
 
+def options(t, work):
+    """The dam break's options (isph.H) keep still water still and
+    hydrostatic: the walls as unknowns (wallPressure implicit, BiCGStab),
+    the one-sided density-invariance term with the walls' contact
+    condition; wallPressure implicit with CG is an error naming both."""
+    variants = (
+        ("wallImplicit", [("bodies/water/wallPressure", "implicit"),
+                          ("bodies/water/pressureSolver/solver",
+                           "BiCGStab")]),
+        ("densityInvariant", [
+            ("bodies/water/densityInvariantRelaxation", 0.05),
+            ("bodies/water/densityInvariantCompressionOnly", "yes"),
+            ("bodies/water/wallContact", 1)]))
+    scale = math.sqrt(G * H)
+    for name, entries in variants:
+        case = make_case(work, name, entries)
+        ok, _ = run_steps(t, case, ("blockMesh", "seedParticles",
+                                    "isphTlsphFoam"), name + ": ")
+        if not ok:
+            continue
+        m = still.measure(case)
+        t.check_close(name + ": ran to 2 s", m["end"], 2.0, 1e-9)
+        t.check_close(name + ": bottom pressure over 1-2 s vs rho g"
+                      " (y_s - dx/2)", m["bottom"], m["expected"], 0.01)
+        largest = max(x for _, _, x in m["history"])
+        t.check(name + ": largest spurious speed over 2 s %.2e < 3e-3"
+                " sqrt(gH)" % (largest / scale), largest < 3e-3 * scale)
+    case = make_case(work, "wallImplicitCG",
+                     [("bodies/water/wallPressure", "implicit")], end=0.01)
+    ok, _ = run_steps(t, case, ("blockMesh", "seedParticles"),
+                      "wallImplicitCG: ")
+    if ok:
+        code, out = run(["isphTlsphFoam"], case)
+        t.check("wallImplicitCG: the run stops", code != 0, out[-600:])
+        for w in ("wallPressure implicit", "CG", "BiCGStab"):
+            t.check("wallImplicitCG: the error names '%s'" % w, w in out,
+                    out[-1200:])
+
+
 def bad_input(t, work):
     case = make_case(work, "noConvergence",
                      [("bodies/water/pressureSolver/maxIter", 1)], end=0.01)
@@ -194,4 +233,4 @@ def bad_input(t, work):
 
 if __name__ == "__main__":
     sys.exit(run_parts("isphStillWater", still_water, consistent, solvers,
-                       bad_input))
+                       options, bad_input))

@@ -37,6 +37,14 @@ Foam::meshless::bodyModels::isph::laplacianNames
 });
 
 
+const Foam::Enum<Foam::meshless::bodyModels::isph::wallPressureType>
+Foam::meshless::bodyModels::isph::wallPressureNames
+({
+    { wallPressureType::pairwise, "pairwise" },
+    { wallPressureType::implicit, "implicit" },
+});
+
+
 namespace
 {
     //- The free-surface range (s0 s1) of div r: 0 < s0 < s1 <= dim
@@ -88,6 +96,23 @@ Foam::meshless::bodyModels::isph::isph
             dict, "laplacian", laplacianNames, laplacianType::symmetric
         ) == laplacianType::consistent
     ),
+    wallPressure_
+    (
+        readEnumOrDefault
+        (
+            dict, "wallPressure", wallPressureNames,
+            wallPressureType::pairwise
+        )
+    ),
+    wallUnknowns_(wallPressure_ == wallPressureType::implicit),
+    densityRelax_
+    (
+        readNonNegativeOrDefault(dict, "densityInvariantRelaxation", 0)
+    ),
+    densityCompressionOnly_
+    (
+        dict.getOrDefault<bool>("densityInvariantCompressionOnly", false)
+    ),
     solver_
     (
         linearSolver::New
@@ -111,6 +136,7 @@ Foam::meshless::bodyModels::isph::isph
     shiftR_(body.particles().addScratchField("shiftR", particleField::kind::vector)),
     gradPsi_(body.particles().addScratchField("gradPsi", particleField::kind::vector)),
     gradU_(body.particles().addScratchField("gradU", particleField::kind::tensor)),
+    densityRatio_(body.particles().addScratchField("densityRatio", particleField::kind::scalar)),
     mu_(0),
     viscosityEffect_(nullptr),
     shifting_(nullptr),
@@ -134,6 +160,21 @@ Foam::meshless::bodyModels::isph::isph
             << " solve: expected solver BiCGStab or BoomerAMG (or laplacian"
             << " symmetric)" << exit(FatalIOError);
     }
+    if (wallUnknowns_ && solver_->needsSymmetric())
+    {
+        FatalIOErrorInFunction(dict)
+            << "wallPressure implicit gives a non-symmetric pressure"
+            << " matrix, which pressureSolver " << solver_->type()
+            << " cannot solve: expected solver BiCGStab or BoomerAMG (or"
+            << " wallPressure pairwise)" << exit(FatalIOError);
+    }
+    if (wallUnknowns_ && consistent_)
+    {
+        FatalIOErrorInFunction(dict)
+            << "wallPressure implicit takes the symmetric Laplacian"
+            << " (its defect correction): expected laplacian symmetric"
+            << exit(FatalIOError);
+    }
 }
 
 
@@ -148,9 +189,14 @@ void Foam::meshless::bodyModels::isph::connectModel(particleScene&)
     }
     shifting_ = findEffect<effects::particleShifting>(body_);
     own_->cache(neighbourRelation::kernelGradient);
+    if (densityRelax_ > 0) own_->cache(neighbourRelation::kernelValue);
     for (boundary& b : boundaries_)
     {
         b.toGhosts->cache(neighbourRelation::kernelGradient);
+        if (wallUnknowns_)
+        {
+            b.fromGhosts->cache(neighbourRelation::kernelGradient);
+        }
     }
 }
 
@@ -161,7 +207,7 @@ void Foam::meshless::bodyModels::isph::setSources()
     viscSrc_.resize(1 + boundaries_.size());
     src_[0] = isphEquations::sourceData
     {
-        true, Ustar_.data(), nullptr, nullptr, nullptr
+        true, Ustar_.data(), nullptr, nullptr, nullptr, nullptr
     };
     viscSrc_[0] = riemannEquations::sourceData
     {
@@ -173,7 +219,7 @@ void Foam::meshless::bodyModels::isph::setSources()
         const ghostBoundary& g = *boundaries_[k].ghosts;
         src_[k + 1] = isphEquations::sourceData
         {
-            false, g.U(), g.accelerations(), g.p(), g.normals()
+            false, g.U(), g.accelerations(), g.p(), g.normals(), nullptr
         };
         viscSrc_[k + 1] = riemannEquations::sourceData
         {
@@ -355,17 +401,55 @@ void Foam::meshless::bodyModels::isph::advanceDim
             n, ctx_.sources,
             divergenceTerm<Dim>{src_.data(), Us, B_.data(), dt*g, divU_.data()}
         );
+        if (densityRelax_ > 0)
+        {
+            // The stabilised source of Asai et al. (2012): div u*_i +
+            // relax (1 - rho*_i/rho0)/dt, rho* the kernel sum at x*
+            const smoothingKernel& W = body_.kernel();
+            const scalar dx = body_.spacing();
+            const label K = label(std::ceil(W.radius()/dx));
+            scalar sigma0 = 0;
+            for (label a = -K; a <= K; ++a)
+            {
+                for (label b = -K; b <= K; ++b)
+                {
+                    for (label c = (Dim == 3 ? -K : 0); c <= (Dim == 3 ? K : 0); ++c)
+                    {
+                        sigma0 += W.W(dx*std::sqrt(scalar(a*a + b*b + c*c)));
+                    }
+                }
+            }
+            sigma0 *= std::pow(dx, Dim);
+            gather
+            (
+                n, ctx_.sources,
+                kernelSumTerm{V_.data(), W.W(0), sigma0, densityRatio_.data()}
+            );
+            const double* ratio = densityRatio_.data();
+            double* div = divU_.data();
+            const double c = densityRelax_/dt;
+            const bool compressionOnly = densityCompressionOnly_;
+            #pragma omp parallel for schedule(static)
+            for (label i = 0; i < n; ++i)
+            {
+                const double e = 1 - ratio[i];
+                div[i] += c*(compressionOnly ? std::min(0.0, e) : e);
+            }
+        }
         rhs_.fill(0);
         const double* Bc = consistent_ ? B_.data() : nullptr;
         const double* mc = consistent_ ? moment_.data() : nullptr;
-        gather
-        (
-            n, ctx_.sources,
-            wallHeadTerm<Dim>
-            {
-                src_.data(), V_.data(), g, rho0_, rhs_.data(), Bc, mc
-            }
-        );
+        if (!wallUnknowns_)
+        {
+            gather
+            (
+                n, ctx_.sources,
+                wallHeadTerm<Dim>
+                {
+                    src_.data(), V_.data(), g, rho0_, rhs_.data(), Bc, mc
+                }
+            );
+        }
         if (!consistent_)
         {
             const double* m = moment_.data();
@@ -379,15 +463,50 @@ void Foam::meshless::bodyModels::isph::advanceDim
                 R[i] -= c;
             }
         }
-        isphEquations::assemblePoisson<Dim>
-        (
-            *own_, V_.data(), alpha_.data(), divr_.data(), divU_.data(),
-            rho0_, dt, rhs_.data(), A_, nullptr, Bc, mc
-        );
+        if (wallUnknowns_)
+        {
+            std::vector<wallBlock> blocks;
+            for (size_t k = 0; k < boundaries_.size(); ++k)
+            {
+                const boundary& b = boundaries_[k];
+                blocks.push_back
+                (
+                    wallBlock
+                    {
+                        b.toGhosts, b.fromGhosts, b.ghosts->V(),
+                        b.ghosts->accelerations(), wallOffset_[k]
+                    }
+                );
+            }
+            std::copy(rhs_.data(), rhs_.data() + n, bAll_.begin());
+            isphEquations::assemblePoissonWalls<Dim>
+            (
+                *own_, blocks, V_.data(), alpha_.data(), divr_.data(),
+                divU_.data(), rho0_, dt, g, bAll_.data(), A_
+            );
+            std::copy(bAll_.begin(), bAll_.begin() + n, rhs_.data());
+        }
+        else
+        {
+            isphEquations::assemblePoisson<Dim>
+            (
+                *own_, V_.data(), alpha_.data(), divr_.data(), divU_.data(),
+                rho0_, dt, rhs_.data(), A_, nullptr, Bc, mc
+            );
+        }
     }
     {
         costAccounting::scope timer(costs, solveCost_);
-        last_ = solver_->solve(A_, rhs_.data(), p_.data());
+        if (wallUnknowns_)
+        {
+            std::copy(p_.data(), p_.data() + n, pAll_.begin());
+            last_ = solver_->solve(A_, bAll_.data(), pAll_.data());
+            std::copy(pAll_.begin(), pAll_.begin() + n, p_.data());
+        }
+        else
+        {
+            last_ = solver_->solve(A_, rhs_.data(), p_.data());
+        }
     }
 
     if (clipPressure_)
@@ -396,6 +515,29 @@ void Foam::meshless::bodyModels::isph::advanceDim
         const double floor = minPressure_;
         #pragma omp parallel for schedule(static)
         for (label i = 0; i < n; ++i) pp[i] = std::max(pp[i], floor);
+        const label N = pAll_.size();
+        if (wallUnknowns_)
+        {
+            for (label i = n; i < N; ++i)
+            {
+                pAll_[i] = std::max(pAll_[i], floor);
+            }
+        }
+    }
+    if (wallUnknowns_)
+    {
+        // The walls' own pressures to their bodies (written, probes)
+        for (size_t k = 0; k < boundaries_.size(); ++k)
+        {
+            particleField& pw =
+                boundaries_[k].ghosts->ghostBody().particles().field("p");
+            std::copy
+            (
+                pAll_.begin() + wallOffset_[k],
+                pAll_.begin() + wallOffset_[k] + pw.size(),
+                pw.data()
+            );
+        }
     }
     Info<< "    " << body_.name() << ": pressure " << last_.solver << ", "
         << last_.iterations << " iterations, residual "
@@ -524,6 +666,36 @@ void Foam::meshless::bodyModels::isph::advance
     if (p_.maxMagnitude() == 0)
     {
         for (size_t k = 1; k < src_.size(); ++k) src_[k].pWall = nullptr;
+    }
+
+    // With the walls as unknowns every wall particle takes part, with the
+    // pressure of the last solve (the interpolated one before the first)
+    if (wallUnknowns_)
+    {
+        const label n = p_.size();
+        label N = n;
+        wallOffset_.resize(boundaries_.size());
+        for (size_t k = 0; k < boundaries_.size(); ++k)
+        {
+            wallOffset_[k] = N;
+            N += boundaries_[k].fromGhosts->size();
+        }
+        if (label(pAll_.size()) != N)
+        {
+            pAll_.assign(N, 0);
+            for (size_t k = 0; k < boundaries_.size(); ++k)
+            {
+                const label nw = boundaries_[k].fromGhosts->size();
+                const double* pw = boundaries_[k].ghosts->p();
+                std::copy(pw, pw + nw, pAll_.begin() + wallOffset_[k]);
+            }
+        }
+        bAll_.resize(N);
+        for (size_t k = 0; k < boundaries_.size(); ++k)
+        {
+            src_[k + 1].pWall = nullptr;
+            src_[k + 1].pSolved = pAll_.data() + wallOffset_[k];
+        }
     }
     dispatchDim(body_.dim(), [&](auto d) { advanceDim<d>(t, dt, costs); });
 }
