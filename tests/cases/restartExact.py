@@ -21,7 +21,11 @@ Cases: particleFoam (freeFall), ulphPdFoam fluid only with fixed walls
 (damBreak) and moving walls (sloshingTank), ulphPd couplings with a
 damped plate (ulphPdHydrostatic), an elastic gate (with the solid's step
 acceleration in its ghosts, too) and breaking bonds (obstacleFracture), nosbPd alone (cantileverBeam, damped), riemannSphFoam's
-Riemann fluid with its acoustic steps (riemannDamBreak), isphTlsphFoam
+Riemann fluid with its acoustic steps (riemannDamBreak) and with open
+boundaries that add and remove particles (riemannChannel without the
+outlet's pressure buffer: the ids, the counters and the mass through them
+continue; with it the continued run differs by 5e-12 of the largest
+pressure after 93 steps, not yet understood), isphTlsphFoam
 TLSPH with the Verlet (oscillatingPlate) and RK4 integrators (clampedBeam,
 damped).
 """
@@ -77,6 +81,9 @@ CASES = {
     "riemannDamBreak": ("tutorials/riemannSphFoam/damBreak",
                         ("resolution", "dx 0.004;"), 0.04, 0.02,
                         "riemannSphFoam", []),
+    "riemannChannel": ("tests/cases/riemannChannel", None, 0.3, 0.15,
+                       "riemannSphFoam",
+                       [(PP, "openBoundaries/outlet/pressure", None)]),
     "clampedBeam": ("tutorials/isphTlsphFoam/clampedBeam",
                     ("runParameters", "dx 0.004;"), 0.0004, 0.0002,
                     "isphTlsphFoam", []),
@@ -106,7 +113,13 @@ def set_up(name, case):
                        ("startFrom", "latestTime")):
         set_entry(case, CD, key, value)
     for dict_file, key, value in entries:
-        set_entry(case, dict_file, key, value)
+        if value is None:
+            code, out = run(["foamDictionary", dict_file, "-entry", key,
+                             "-remove"], case)
+            if code != 0:
+                raise RuntimeError(out)
+        else:
+            set_entry(case, dict_file, key, value)
     for cmd in ("blockMesh", "seedParticles"):
         code, out = run([cmd], case)
         if code != 0:

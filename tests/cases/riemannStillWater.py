@@ -30,7 +30,8 @@ import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(here), "lib"))
-from caseTest import copy_case, run, run_parts, run_steps  # noqa: E402
+from caseTest import (copy_case, put_entry, run, run_parts,  # noqa: E402
+                      run_steps)
 from foamCloud import read_cloud, speed_history, times  # noqa: E402
 from foamMonitor import run_cost  # noqa: E402
 
@@ -39,11 +40,7 @@ PP = "constant/particleProperties"
 
 
 def set_pp(case, key, value):
-    for action in ("-add", "-set"):
-        code, out = run(["foamDictionary", PP, "-entry", key, action,
-                         str(value)], case)
-        if code != 0:
-            raise RuntimeError(out)
+    put_entry(case, PP, key, value)
 
 
 def still_water(t, work, name, entries, rms_bound, decaying, p_tol):

@@ -113,6 +113,16 @@ def set_entry(case, dict_file, entry, value):
         raise RuntimeError(out)
 
 
+def put_entry(case, dict_file, entry, value):
+    """Add or set <entry> of a case dictionary (foamDictionary -add, then
+    -set, which also replaces a sub-dictionary by a value)."""
+    for action in ("-add", "-set"):
+        code, out = run(["foamDictionary", dict_file, "-entry", entry,
+                         action, str(value)], case)
+        if code != 0:
+            raise RuntimeError(out)
+
+
 def snapshot(case):
     """Every file below a case with a hash of its content."""
     out = {}

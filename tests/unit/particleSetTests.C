@@ -101,6 +101,67 @@ TEST(particleSet, reorderDoesNotMoveFieldStorage)
 }
 
 
+TEST(particleSet, appendCopiesAndRemoveMarkedKeepEveryFieldWithItsId)
+{
+    particleSet s("fluid", 2);
+    s.addField("p", particleField::kind::scalar);
+    s.addField("U", particleField::kind::vector);
+    s.resize(50);
+    auto setData = [&](const label i, const double v)
+    {
+        s.positions()(i, 0) = v;
+        s.positions()(i, 1) = -v;
+        s.field("p")(i, 0) = 10*v;
+        s.field("U")(i, 0) = 100*v;
+        s.field("U")(i, 1) = 1000*v;
+    };
+    for (label i = 0; i < s.size(); ++i) setData(i, s.ids()[i]);
+
+    // Copies of 3 particles: fresh ids, the originals' data
+    const std::vector<label> from{4, 17, 4};
+    const label first = s.appendCopies(from);
+    EXPECT_EQ(first, 50);
+    EXPECT_EQ(s.size(), 53);
+    EXPECT_EQ(s.nextId(), 53);
+    for (label k = 0; k < 3; ++k)
+    {
+        const label i = first + k;
+        EXPECT_EQ(s.ids()[i], 50 + k);
+        EXPECT_EQ(s.positions()(i, 0), s.positions()(from[k], 0));
+        EXPECT_EQ(s.field("U")(i, 1), s.field("U")(from[k], 1));
+        // Make each copy identify itself by its id again
+        setData(i, s.ids()[i]);
+    }
+
+    // Remove every third particle: the others keep order, ids and data
+    std::vector<char> marks(s.size(), 0);
+    std::vector<label> kept;
+    for (label i = 0; i < s.size(); ++i)
+    {
+        if (i % 3 == 0) marks[i] = 1;
+        else kept.push_back(s.ids()[i]);
+    }
+    EXPECT_EQ(s.removeMarked(marks), 18);
+    ASSERT_EQ(s.size(), label(kept.size()));
+    for (label i = 0; i < s.size(); ++i)
+    {
+        const label id = s.ids()[i];
+        EXPECT_EQ(id, kept[i]);
+        EXPECT_EQ(s.positions()(i, 0), id);
+        EXPECT_EQ(s.positions()(i, 1), -id);
+        EXPECT_EQ(s.field("p")(i, 0), 10.0*id);
+        EXPECT_EQ(s.field("U")(i, 0), 100.0*id);
+        EXPECT_EQ(s.field("U")(i, 1), 1000.0*id);
+        EXPECT_EQ(s.field("U").size(), s.size());
+    }
+
+    // Removed ids are never handed out again
+    EXPECT_EQ(s.nextId(), 53);
+    s.resize(s.size() + 1);
+    EXPECT_EQ(s.ids().back(), 53);
+}
+
+
 TEST(particleSet, setIdsContinuesAfterTheLargest)
 {
     particleSet s("fluid", 2);

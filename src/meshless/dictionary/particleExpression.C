@@ -45,7 +45,22 @@ void Foam::meshless::particleExpression::evaluate
     {
         for (label c = 0; c < dim; ++c) X[i][c] = X0(i, c);
     }
+    const tmp<vectorField> tvalues = evaluate(dict, X);
+    const vectorField& values = tvalues();
+    for (label i = 0; i < n; ++i)
+    {
+        for (label c = 0; c < dim; ++c) result(i, c) = values[i][c];
+    }
+}
 
+
+Foam::tmp<Foam::vectorField> Foam::meshless::particleExpression::evaluate
+(
+    const dictionary& dict,
+    const vectorField& X
+)
+{
+    const label n = X.size();
     particleExpression driver(n, dict);
     driver.setPositions("X", X);
 
@@ -60,18 +75,14 @@ void Foam::meshless::particleExpression::evaluate
             << exit(FatalIOError);
     }
 
-    const tmp<vectorField> tvalues = driver.getResult<vector>(false);
-    const vectorField& values = tvalues();
-    if (values.size() != n)
+    tmp<vectorField> tvalues = driver.getResult<vector>(false);
+    if (tvalues().size() != n)
     {
         FatalIOErrorInFunction(dict)
-            << "expression \"" << expr << "\" gave " << values.size()
+            << "expression \"" << expr << "\" gave " << tvalues().size()
             << " values for " << n << " particles" << exit(FatalIOError);
     }
-    for (label i = 0; i < n; ++i)
-    {
-        for (label c = 0; c < dim; ++c) result(i, c) = values[i][c];
-    }
+    return tvalues;
 }
 
 

@@ -154,6 +154,90 @@ void Foam::meshless::particleSet::setIds(const std::vector<label>& ids)
 }
 
 
+void Foam::meshless::particleSet::setNextId(const label next)
+{
+    for (const label id : id_)
+    {
+        if (id >= next)
+        {
+            FatalErrorInFunction
+                << "Particle set " << name_ << ": next id " << next
+                << " is not above the existing id " << id
+                << abort(FatalError);
+        }
+    }
+    nextId_ = next;
+}
+
+
+Foam::label Foam::meshless::particleSet::appendCopies
+(
+    const std::vector<label>& from
+)
+{
+    const label n0 = size_;
+    const label nNew = label(from.size());
+    resize(n0 + nNew);
+    for (auto& f : fields_)
+    {
+        particleField& field = *f.second;
+        const label nc = field.nComponents();
+        double* d = field.data();
+        for (label k = 0; k < nNew; ++k)
+        {
+            const double* src = d + size_t(from[k])*nc;
+            double* dst = d + size_t(n0 + k)*nc;
+            for (label c = 0; c < nc; ++c) dst[c] = src[c];
+        }
+    }
+    return n0;
+}
+
+
+Foam::label Foam::meshless::particleSet::removeMarked
+(
+    const std::vector<char>& remove
+)
+{
+    if (label(remove.size()) != size_)
+    {
+        FatalErrorInFunction
+            << "Particle set " << name_ << " has " << size_
+            << " particles but the removal marks " << remove.size()
+            << abort(FatalError);
+    }
+    label kept = 0;
+    for (label i = 0; i < size_; ++i)
+    {
+        if (!remove[i]) id_[kept++] = id_[i];
+    }
+    if (kept == size_) return 0;
+    for (auto& f : fields_)
+    {
+        particleField& field = *f.second;
+        const label nc = field.nComponents();
+        double* d = field.data();
+        label j = 0;
+        for (label i = 0; i < size_; ++i)
+        {
+            if (remove[i]) continue;
+            if (j != i)
+            {
+                double* dst = d + size_t(j)*nc;
+                const double* src = d + size_t(i)*nc;
+                for (label c = 0; c < nc; ++c) dst[c] = src[c];
+            }
+            ++j;
+        }
+        field.resize(kept);
+    }
+    const label removed = size_ - kept;
+    id_.resize(kept);
+    size_ = kept;
+    return removed;
+}
+
+
 void Foam::meshless::particleSet::reorder(const std::vector<label>& order)
 {
     if (label(order.size()) != size_)

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "particleScene.H"
+#include "openBoundaryFlux.H"
 #include "readPeriodicBox.H"
 #include "bodyModel.H"
 #include "solidModel.H"
@@ -85,6 +86,24 @@ Foam::meshless::particleScene::particleScene(const polyMesh& mesh)
         coupling_ = fsiCoupling::New(dict_.subDict("coupling"), *this);
     }
 
+    if (const dictionary* obDict = dict_.findDict("openBoundaries"))
+    {
+        for (const entry& e : *obDict)
+        {
+            if (!e.isDict())
+            {
+                FatalIOErrorInFunction(*obDict)
+                    << "Entry '" << e.keyword() << "' in 'openBoundaries':"
+                    << " expected an open boundary dictionary"
+                    << exit(FatalIOError);
+            }
+            openBoundaries_.append
+            (
+                openBoundary::New(e.keyword(), e.dict(), *this)
+            );
+        }
+    }
+
     if (dict_.found("monitors"))
     {
         for (const entry& e : dict_.subDict("monitors"))
@@ -97,6 +116,17 @@ Foam::meshless::particleScene::particleScene(const polyMesh& mesh)
             }
             monitors_.append(monitor::New(e.keyword(), e.dict(), *this));
         }
+    }
+
+    if (!openBoundaries_.empty())
+    {
+        monitors_.append
+        (
+            new monitors::openBoundaryFlux
+            (
+                "openBoundaries", dictionary(), *this, openBoundaries_
+            )
+        );
     }
 
     // Escape box: the mesh with room for wall layers and a splash, or the
@@ -288,6 +318,35 @@ void Foam::meshless::particleScene::advance(const scalar t, const scalar dt)
     {
         coupling_->advance(t, dt, costs_);
     }
+    if (!openBoundaries_.empty()) exchangeOpenBoundaries(t + dt);
+}
+
+
+void Foam::meshless::particleScene::exchangeOpenBoundaries(const scalar t)
+{
+    // Emit first: an inflow's particles are indices of the step's start,
+    // which removals would shift
+    labelList changed(bodies_.size(), 0);
+    auto bodyIndex = [&](const openBoundary& ob)
+    {
+        forAll(bodies_, b)
+        {
+            if (&bodies_[b] == &ob.body()) return b;
+        }
+        return label(-1);
+    };
+    for (openBoundary& ob : openBoundaries_)
+    {
+        changed[bodyIndex(ob)] += ob.emit(t);
+    }
+    for (openBoundary& ob : openBoundaries_)
+    {
+        changed[bodyIndex(ob)] += ob.remove(t);
+    }
+    forAll(bodies_, b)
+    {
+        if (changed[b]) bodies_[b].model().resized();
+    }
 }
 
 
@@ -439,6 +498,11 @@ void Foam::meshless::particleScene::describe(Ostream& os) const
                 << box.max(d) << ')';
         }
         os  << nl;
+    }
+    for (const openBoundary& ob : openBoundaries_)
+    {
+        os  << "    open boundary " << ob.name() << ": " << ob.type()
+            << " of " << ob.body().name() << nl;
     }
     if (vtp_) os << "    output: lagrangian clouds and VTK .vtp" << nl;
     os  << endl;

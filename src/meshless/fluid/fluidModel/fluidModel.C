@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "fluidModel.H"
+#include "openBoundary.H"
 #include "particleScene.H"
 #include "effect.H"
 #include "gravity.H"
@@ -219,6 +220,42 @@ Foam::vector Foam::meshless::fluidModel::forceOnFluid
         << "Fluid " << body_.name() << " has no such boundary"
         << exit(FatalError);
     return Zero;
+}
+
+
+void Foam::meshless::fluidModel::addOpenBoundary(openBoundary& ob)
+{
+    if (!takesOpenBoundaries())
+    {
+        FatalIOErrorInFunction(body_.dict())
+            << "Fluid " << body_.name() << " (model " << type()
+            << ") takes no open boundary (open boundary " << ob.name()
+            << "): expected a model that does (riemannWcsph)"
+            << exit(FatalIOError);
+    }
+    openBoundaries_.push_back(&ob);
+}
+
+
+void Foam::meshless::fluidModel::resized()
+{
+    setContext();
+    resizedModel();
+}
+
+
+void Foam::meshless::fluidModel::selectOpenBoundaries(const scalar t)
+{
+    for (openBoundary* ob : openBoundaries_) ob->select(t);
+}
+
+
+void Foam::meshless::fluidModel::constrainOpenBoundaries(const scalar t)
+{
+    for (openBoundary* ob : openBoundaries_)
+    {
+        ob->constrain(t, U_.data(), rho_.data());
+    }
 }
 
 

@@ -369,6 +369,12 @@ void Foam::meshless::bodyModels::riemannWcsph::viscousReactions()
 }
 
 
+void Foam::meshless::bodyModels::riemannWcsph::resizedModel()
+{
+    setSources();
+}
+
+
 void Foam::meshless::bodyModels::riemannWcsph::setSources()
 {
     using riemannEquations::sourceData;
@@ -652,6 +658,12 @@ void Foam::meshless::bodyModels::riemannWcsph::advanceDim
         costAccounting::scope timer(costs, summationCost_);
         reinitialiseDensity<Dim>();
     }
+    if (!openBoundaries_.empty())
+    {
+        selectOpenBoundaries(t);
+        constrainOpenBoundaries(t);
+        updatePressure();
+    }
     if (correction_ != correctionType::none)
     {
         costAccounting::scope timer(costs, correctionCost_);
@@ -745,6 +757,7 @@ void Foam::meshless::bodyModels::riemannWcsph::advanceDim
         if (react) pressureReactions<Dim>(rho, a0, rho0c0, s == nAc - 1);
         #pragma omp parallel for schedule(static)
         for (label k = 0; k < nv; ++k) U[k] += dts*(aP[k] + aDc[k] + a0[k]);
+        constrainOpenBoundaries(ts + dts);
 
         // A coupling's solids over the same acoustic step, with the
         // reaction of the forces that moved the fluid (the dissipation's
@@ -758,6 +771,7 @@ void Foam::meshless::bodyModels::riemannWcsph::advanceDim
         dissipation<Dim>(U, rho, rho0c0);
         if (react) dissipationReactions<Dim>(U, rho, rho0c0);
         updateDensity(rho, drho, 0.5*dts, rho);
+        constrainOpenBoundaries(ts + dts);
     }
 
     // The accelerations the next advection step is taken from

@@ -1,0 +1,117 @@
+/*---------------------------------------------------------------------------*\
+  meshlessFoam: meshless fluid-structure interaction inside OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "openBoundaryFlux.H"
+#include "particleScene.H"
+
+namespace Foam
+{
+namespace meshless
+{
+namespace monitors
+{
+    defineTypeNameAndDebug(openBoundaryFlux, 0);
+}
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //
+
+Foam::meshless::monitors::openBoundaryFlux::openBoundaryFlux
+(
+    const word& name,
+    const dictionary& dict,
+    const particleScene& scene,
+    PtrList<openBoundary>& boundaries
+)
+:
+    monitor(name, dict, scene),
+    boundaries_(boundaries)
+{
+    forAll(boundaries_, k)
+    {
+        bool first = true;
+        for (label j = 0; j < k; ++j)
+        {
+            if (&boundaries_[j].body() == &boundaries_[k].body())
+            {
+                first = false;
+            }
+        }
+        if (first) bodyOf_.append(k);
+    }
+
+    const dictionary* state = restartState();
+    if (!state) return;
+    for (openBoundary& ob : boundaries_)
+    {
+        const dictionary& d = state->subDict(ob.name());
+        ob.setCounters(d.get<label>("particles"), d.get<scalar>("mass"));
+    }
+    for (const label k : bodyOf_)
+    {
+        particleSet& set = boundaries_[k].body().particles();
+        set.setNextId
+        (
+            state->get<label>(word(boundaries_[k].body().name() + ".nextId"))
+        );
+    }
+}
+
+
+// * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
+
+Foam::wordList Foam::meshless::monitors::openBoundaryFlux::columns() const
+{
+    wordList c;
+    for (const label k : bodyOf_)
+    {
+        c.append(boundaries_[k].body().name() + ".particles");
+    }
+    for (const openBoundary& ob : boundaries_)
+    {
+        c.append(ob.name() + ".particles");
+        c.append(ob.name() + ".mass");
+    }
+    return c;
+}
+
+
+void Foam::meshless::monitors::openBoundaryFlux::writeValues(Ostream& os)
+{
+    for (const label k : bodyOf_)
+    {
+        os << tab << boundaries_[k].body().particles().size();
+    }
+    for (const openBoundary& ob : boundaries_)
+    {
+        os << tab << ob.particles() << tab << ob.mass();
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::meshless::monitors::openBoundaryFlux::writeState
+(
+    dictionary& dict
+) const
+{
+    for (const openBoundary& ob : boundaries_)
+    {
+        dictionary d;
+        d.add("particles", ob.particles());
+        d.add("mass", ob.mass());
+        dict.add(ob.name(), d);
+    }
+    for (const label k : bodyOf_)
+    {
+        const particleBody& b = boundaries_[k].body();
+        dict.add(word(b.name() + ".nextId"), b.particles().nextId());
+    }
+}
+
+
+// ************************************************************************* //
