@@ -53,10 +53,21 @@ Foam::meshless::particleBody::particleBody
     }
     else if (set_.found("volume") && set_.size())
     {
+        // Seeded volumes are equal: take that value, not a mean whose last
+        // bits depend on the count (a restart of a body that gained or
+        // lost particles through an open boundary would change h)
         const particleField& V = set_.field("volume");
         scalar sum = 0;
-        for (label i = 0; i < set_.size(); ++i) sum += V(i, 0);
-        spacing_ = std::pow(sum/set_.size(), 1.0/dim);
+        scalar lo = GREAT;
+        scalar hi = -GREAT;
+        for (label i = 0; i < set_.size(); ++i)
+        {
+            sum += V(i, 0);
+            lo = min(lo, V(i, 0));
+            hi = max(hi, V(i, 0));
+        }
+        const scalar mean = hi - lo <= 1e-12*hi ? lo : sum/set_.size();
+        spacing_ = std::pow(mean, 1.0/dim);
     }
     else
     {
