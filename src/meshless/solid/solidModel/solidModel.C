@@ -76,6 +76,24 @@ Foam::meshless::solidModel::solidModel
     normals_(nullptr)
 {
     particleSet& set = body.particles();
+
+    // The dynamics take the cloud's masses, the stable step and the wave
+    // speed the body's density: they must agree
+    const scalar rho = body.density();
+    for (label i = 0; i < set.size(); ++i)
+    {
+        const scalar seeded = mass_(i, 0)/V0_(i, 0);
+        if (!(mag(seeded - rho) <= 1e-6*rho))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Body '" << body.name() << "': density " << rho
+                << " but its particle id " << set.ids()[i] << " has mass/"
+                << "volume " << seeded << " in the cloud: expected the"
+                << " density the body was seeded with (seedParticlesDict)"
+                << exit(FatalIOError);
+        }
+    }
+
     if (integrator_ == integratorType::rk4)
     {
         xn_ = &set.addScratchField("xn", particleField::kind::vector);
