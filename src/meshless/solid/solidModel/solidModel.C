@@ -525,14 +525,15 @@ bool Foam::meshless::solidModel::newmarkStep
         }
         jacobian_->solve(r, dx);
         double dn = 0;
-        for (label k = 0; k < nv; ++k)
-        {
-            xe[k] += dx[k];
-            dn = max(dn, mag(dx[k]));
-        }
+        for (label k = 0; k < nv; ++k) dn = max(dn, mag(dx[k]));
         lastR = rn;
-        lastDx = dn;
         ++iters;
+
+        // A correction beyond the kernel's support is a diverging Newton
+        // (evaluating it could overflow the law): the step is halved
+        if (!(dn <= 2*body_.kernel().h())) break;
+        for (label k = 0; k < nv; ++k) xe[k] += dx[k];
+        lastDx = dn;
     }
     newtonIters_ += iters;
     newtonResidual_ = lastR;
