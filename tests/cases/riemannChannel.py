@@ -14,7 +14,9 @@ about twice. Checks:
 - mass is accounted for at every written time, to round-off: the
   cloud's mass is the seeded mass plus the mass in minus the mass out of
   postProcessing/openBoundaries, and the particle count likewise; ids
-  stay unique; no particle lies beyond the outlet;
+  stay unique; no particle lies beyond the outlet; the inflow buffer
+  (field inletBuffer) holds its 80 particles and no fluid particle lies
+  upstream of the inlet;
 - the mass in is rho U H times the ramped time, 62.5 kg/m, within one
   column of particles (0.5 kg/m);
 - the log names both open boundaries;
@@ -73,6 +75,14 @@ def plug_flow(t, work):
         t.check_equal("%g s: ids unique" % time, len(set(c["id"])), n)
         t.check("%g s: no particle beyond the outlet" % time,
                 all(x[0] < OUTLET for x in c["positions"]))
+        if time > 0:
+            flags = c.get("inletBuffer", [])
+            t.check_equal("%g s: the inflow buffer holds its 4 columns of"
+                          " 20 particles" % time,
+                          sum(1 for f in flags if f > 0.5), 80)
+            t.check("%g s: no fluid particle upstream of the inlet" % time,
+                    all(f > 0.5 or x[0] >= 0 for f, x in
+                        zip(flags, c["positions"])))
 
     end = series[-1]
     t.check_close("ran to 1.5 s", end[0], 1.5, 1e-9)

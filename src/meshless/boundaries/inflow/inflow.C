@@ -31,7 +31,28 @@ Foam::meshless::openBoundaries::inflow::inflow
 )
 :
     openBoundary(name, dict, scene),
-    velocityDict_(dict_.subDict("velocity"))
+    velocityDict_(dict_.subDict("velocity")),
+    inBuffer_
+    (
+        [&]() -> particleField&
+        {
+            particleSet& set = body_.particles();
+            const word field(name + "Buffer");
+            const bool fresh = !set.found(field);
+            particleField& f =
+                set.addField(field, particleField::kind::scalar);
+            // A fresh start: the buffer is what lies in its layer
+            if (fresh)
+            {
+                for (label i = 0; i < set.size(); ++i)
+                {
+                    const scalar s = distance(i);
+                    f(i, 0) = s >= -bufferLength_ && s < 0 ? 1 : 0;
+                }
+            }
+            return f;
+        }()
+    )
 {
     if (bufferLength_ <= 0)
     {
@@ -64,7 +85,12 @@ Foam::scalar Foam::meshless::openBoundaries::inflow::ramp
 
 void Foam::meshless::openBoundaries::inflow::select(const scalar)
 {
-    selectBetween(-bufferLength_, 0);
+    buffer_.clear();
+    const label n = body_.particles().size();
+    for (label i = 0; i < n; ++i)
+    {
+        if (inBuffer_(i, 0) > 0.5) buffer_.push_back(i);
+    }
     const label nb = buffer_.size();
     target_.resize(nb);
     if (!nb) return;
@@ -109,8 +135,11 @@ Foam::label Foam::meshless::openBoundaries::inflow::emit(const scalar)
     const label nc = crossed_.size();
     if (!nc) return 0;
 
+    // The crossed particles go on as fluid, their copies (buffer
+    // particles) a buffer length upstream
     particleSet& set = body_.particles();
     const label first = set.appendCopies(crossed_);
+    for (const label i : crossed_) inBuffer_(i, 0) = 0;
     particleField& x = set.positions();
     const particleField& m = set.field("mass");
     for (label k = 0; k < nc; ++k)
@@ -123,6 +152,30 @@ Foam::label Foam::meshless::openBoundaries::inflow::emit(const scalar)
     }
     particles_ += nc;
     return nc;
+}
+
+
+Foam::label Foam::meshless::openBoundaries::inflow::remove(const scalar)
+{
+    // Fluid particles back upstream of the plane leave through the inlet
+    particleSet& set = body_.particles();
+    const label n = set.size();
+    marks_.assign(n, 0);
+    const particleField& m = set.field("mass");
+    label nr = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        if (inBuffer_(i, 0) < 0.5 && distance(i) < 0)
+        {
+            marks_[i] = 1;
+            mass_ -= m(i, 0);
+            ++nr;
+        }
+    }
+    if (!nr) return 0;
+    set.removeMarked(marks_);
+    particles_ -= nr;
+    return nr;
 }
 
 
