@@ -30,6 +30,19 @@ void Foam::meshless::particleExpression::setPositions
 }
 
 
+void Foam::meshless::particleExpression::setPositionsAndTime
+(
+    const vectorField& X,
+    const scalar t
+)
+{
+    variables_.clear();
+    variables_.set("X", expressions::exprResult(X));
+    variables_.set("t", expressions::exprResult(scalarField(X.size(), t)));
+    addVariables(variableStrings_, false);
+}
+
+
 void Foam::meshless::particleExpression::evaluate
 (
     const dictionary& dict,
@@ -57,12 +70,14 @@ void Foam::meshless::particleExpression::evaluate
 Foam::tmp<Foam::vectorField> Foam::meshless::particleExpression::evaluate
 (
     const dictionary& dict,
-    const vectorField& X
+    const vectorField& X,
+    const scalar* time
 )
 {
     const label n = X.size();
     particleExpression driver(n, dict);
-    driver.setPositions("X", X);
+    if (time) driver.setPositionsAndTime(X, *time);
+    else driver.setPositions("X", X);
 
     const expressions::exprString expr(dict.get<string>("expression"));
     driver.parse(expr);

@@ -68,7 +68,8 @@ Foam::meshless::openBoundaries::inflow::inflow
 
     // Check the expression once (a vector per point)
     vectorField X(1, point_);
-    particleExpression::evaluate(velocityDict_, X);
+    const scalar t0 = scene.time().value();
+    particleExpression::evaluate(velocityDict_, X, &t0);
 }
 
 
@@ -83,7 +84,7 @@ Foam::scalar Foam::meshless::openBoundaries::inflow::ramp
 }
 
 
-void Foam::meshless::openBoundaries::inflow::select(const scalar)
+void Foam::meshless::openBoundaries::inflow::select(const scalar t)
 {
     buffer_.clear();
     const label n = body_.particles().size();
@@ -102,7 +103,8 @@ void Foam::meshless::openBoundaries::inflow::select(const scalar)
         X_[k] = Zero;
         for (label d = 0; d < dim_; ++d) X_[k][d] = x(buffer_[k], d);
     }
-    const tmp<vectorField> tU = particleExpression::evaluate(velocityDict_, X_);
+    const tmp<vectorField> tU =
+        particleExpression::evaluate(velocityDict_, X_, &t);
     for (label k = 0; k < nb; ++k) target_[k] = tU()[k];
 }
 
