@@ -160,24 +160,10 @@ Foam::label Foam::meshless::openBoundaries::inflow::emit(const scalar)
 Foam::label Foam::meshless::openBoundaries::inflow::remove(const scalar)
 {
     // Fluid particles back upstream of the plane leave through the inlet
-    particleSet& set = body_.particles();
-    const label n = set.size();
-    marks_.assign(n, 0);
-    const particleField& m = set.field("mass");
-    label nr = 0;
-    for (label i = 0; i < n; ++i)
-    {
-        if (inBuffer_(i, 0) < 0.5 && distance(i) < 0)
-        {
-            marks_[i] = 1;
-            mass_ -= m(i, 0);
-            ++nr;
-        }
-    }
-    if (!nr) return 0;
-    set.removeMarked(marks_);
-    particles_ -= nr;
-    return nr;
+    return removeWhere
+    (
+        [&](const label i) { return inBuffer_(i, 0) < 0.5 && distance(i) < 0; }
+    );
 }
 
 

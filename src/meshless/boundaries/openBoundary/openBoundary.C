@@ -106,4 +106,30 @@ void Foam::meshless::openBoundary::selectBetween
 }
 
 
+Foam::label Foam::meshless::openBoundary::removeWhere
+(
+    const std::function<bool(label)>& leaves
+)
+{
+    particleSet& set = body_.particles();
+    const label n = set.size();
+    marks_.assign(n, 0);
+    const particleField& m = set.field("mass");
+    label nr = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        if (leaves(i))
+        {
+            marks_[i] = 1;
+            mass_ -= m(i, 0);
+            ++nr;
+        }
+    }
+    if (!nr) return 0;
+    set.removeMarked(marks_);
+    particles_ -= nr;
+    return nr;
+}
+
+
 // ************************************************************************* //

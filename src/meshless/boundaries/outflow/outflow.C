@@ -66,24 +66,7 @@ void Foam::meshless::openBoundaries::outflow::constrain
 Foam::label Foam::meshless::openBoundaries::outflow::remove(const scalar)
 {
     buffer_.clear();
-    particleSet& set = body_.particles();
-    const label n = set.size();
-    marks_.assign(n, 0);
-    const particleField& m = set.field("mass");
-    label nr = 0;
-    for (label i = 0; i < n; ++i)
-    {
-        if (distance(i) >= 0)
-        {
-            marks_[i] = 1;
-            mass_ -= m(i, 0);
-            ++nr;
-        }
-    }
-    if (!nr) return 0;
-    set.removeMarked(marks_);
-    particles_ -= nr;
-    return nr;
+    return removeWhere([&](const label i) { return distance(i) >= 0; });
 }
 
 
