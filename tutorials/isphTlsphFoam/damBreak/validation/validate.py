@@ -17,9 +17,10 @@ decision).
 Stability (pass/fail): the run reached endTime; the water keeps its
 particles; no particle deeper than dx/2 into a wall; the total energy
 (kinetic + potential) never rises above its lowest earlier value by more
-than 2.5 % of rho0 g H^3/2: a guard against a blow-up, not a goal (1.8 %
-measured at H/dx = 28.5: the particle shifting and the pressure floor
-do not conserve energy; the ULPH fluid keeps 0.5 %).
+than 4 % of rho0 g H^3/2: a guard against a blow-up, not a goal (1.0 to
+2.7 % at H/dx = 28.5 over perturbations of h by 1e-13 of itself: the run
+is chaotic in the small; the particle shifting and the pressure floor do
+not conserve energy; the ULPH fluid keeps 0.5 %).
 
 The impact itself is not yet part of the tutorial: the run blows up at
 t = 0.18-0.24 s when the front hits the far wall (README).
@@ -75,7 +76,7 @@ def main():
     rows = front_errors(ts, xs, here)
     err = rms([r[3] - r[2] for r in rows])
     err_exp = rms([r[3] - r[1] for r in rows])
-    checks, total = stability(case, dx, 0.025)
+    checks, total = stability(case, dx, 0.04)
     cost = run_cost(case)
     front_ok = err < TARGET
     stable = all(ok for _, ok in checks)
