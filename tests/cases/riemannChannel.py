@@ -32,8 +32,8 @@ import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(here), "lib"))
-from caseTest import (copy_case, put_entry, run, run_parts,  # noqa: E402
-                      run_steps)
+from caseTest import (copy_case, put_entry, refused_entries,  # noqa: E402
+                      run_parts, run_steps)
 from foamCloud import read_cloud, times  # noqa: E402
 from foamMonitor import monitor_rows  # noqa: E402
 
@@ -127,30 +127,18 @@ def time_expression(t, work):
 
 
 def bad_input(t, work):
-    for name, key, value, words in (
+    refused_entries(t, os.path.join(here, "riemannChannel"), work,
+                    "riemannSphFoam", (
         ("notFluid", "openBoundaries/inlet/body", "channel",
-         ("inlet", "channel", "not a fluid")),
+         ("particleProperties", "inlet", "channel", "not a fluid")),
         ("noBuffer", "openBoundaries/inlet/bufferLength", 0,
-         ("bufferLength", "expected a buffer length > 0")),
+         ("particleProperties", "bufferLength",
+          "expected a buffer length > 0")),
         ("pressureNoBuffer", "openBoundaries/outlet/bufferLength", 0,
-         ("pressure", "bufferLength")),
+         ("particleProperties", "pressure", "bufferLength")),
         ("unknownType", "openBoundaries/outlet/type", "exit",
-         ("exit", "inflow", "outflow")),
-    ):
-        case = copy_case(os.path.join(here, "riemannChannel"),
-                         os.path.join(work, name))
-        set_pp(case, key, value)
-        ok, _ = run_steps(t, case, ("blockMesh", "seedParticles"),
-                          name + ": ")
-        if not ok:
-            continue
-        code, out = run(["riemannSphFoam"], case)
-        t.check(name + ": the run stops", code != 0, out[-400:])
-        t.check(name + ": the error names particleProperties",
-                "particleProperties" in out, out[-800:])
-        for w in words:
-            t.check("%s: the error names '%s'" % (name, w), w in out,
-                    out[-800:])
+         ("particleProperties", "exit", "inflow", "outflow")),
+    ))
 
 
 if __name__ == "__main__":

@@ -123,6 +123,26 @@ def put_entry(case, dict_file, entry, value):
             raise RuntimeError(out)
 
 
+def refused_entries(t, source, work, solver, cases,
+                    dict_file="constant/particleProperties"):
+    """Bad input: for each (name, entry, value, words) of cases, a copy of
+    the case folder source as <work>/<name> with the entry put into
+    dict_file (put_entry), meshed and seeded, then the solver: the run must
+    stop and its output name every word."""
+    for name, entry, value, words in cases:
+        case = copy_case(source, os.path.join(work, name))
+        put_entry(case, dict_file, entry, value)
+        ok, _ = run_steps(t, case, ("blockMesh", "seedParticles"),
+                          name + ": ")
+        if not ok:
+            continue
+        code, out = run([solver], case)
+        t.check(name + ": the run stops", code != 0, out[-400:])
+        for w in words:
+            t.check("%s: the error names '%s'" % (name, w), w in out,
+                    out[-800:])
+
+
 def snapshot(case):
     """Every file below a case with a hash of its content."""
     out = {}
