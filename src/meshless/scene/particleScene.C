@@ -326,27 +326,14 @@ void Foam::meshless::particleScene::exchangeOpenBoundaries(const scalar t)
 {
     // Emit first: an inflow's particles are indices of the step's start,
     // which removals would shift
-    labelList changed(bodies_.size(), 0);
-    auto bodyIndex = [&](const openBoundary& ob)
-    {
-        forAll(bodies_, b)
-        {
-            if (&bodies_[b] == &ob.body()) return b;
-        }
-        return label(-1);
-    };
-    for (openBoundary& ob : openBoundaries_)
-    {
-        changed[bodyIndex(ob)] += ob.emit(t);
-    }
-    for (openBoundary& ob : openBoundaries_)
-    {
-        changed[bodyIndex(ob)] += ob.remove(t);
-    }
-    forAll(bodies_, b)
-    {
-        if (changed[b]) bodies_[b].model().resized();
-    }
+    label changed = 0;
+    for (openBoundary& ob : openBoundaries_) changed += ob.emit(t);
+    for (openBoundary& ob : openBoundaries_) changed += ob.remove(t);
+
+    // The models refresh their views (a body with two boundaries twice:
+    // resized only re-reads the fields)
+    if (!changed) return;
+    for (openBoundary& ob : openBoundaries_) ob.body().model().resized();
 }
 
 
