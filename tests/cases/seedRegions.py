@@ -5,7 +5,9 @@
 box as a closed STL (triSurfaceMesh), a sphere, their union, intersection
 and difference, and the mesh minus the box; every count is compared with
 the lattice points counted here, and the sphere's volume with the analytic
-one. 2D: a disk (a cylinder along z through the mid-plane) against pi r^2.
+one. 2D: a disk (a cylinder along z through the mid-plane) against pi r^2;
+a wall plate (a gate of ghost particles) seeded in a box with a uniform
+'normal', written normalised on every particle; bad normals refused.
 """
 import math
 import os
@@ -14,6 +16,7 @@ import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(
     os.path.abspath(__file__))), "lib"))
 from caseTest import run_parts  # noqa: E402
+from foamCloud import read_cloud  # noqa: E402
 import seedCase  # noqa: E402
 
 DX = 0.001
@@ -167,5 +170,41 @@ def check_2d(t, work):
                 all(abs(p[2] - 0.0005) < 1e-9 for p in c["points"]))
 
 
+def check_normal(t, work):
+    case = os.path.join(work, "gate")
+    gate = ("    gate { spacing %g; density 1000; normal (-2 0 0);"
+            " region { type box; min (0.01 0 -1); max (0.014 0.03 1); } }\n"
+            % DX)
+    mesh = seedCase.make_case(case, SQUARE_2D, "bodies\n{\n%s}\n" % gate)
+    t.check("normal: blockMesh", mesh.returncode == 0, mesh.stderr[-1000:])
+    run = seedCase.seed(case)
+    t.check("normal: seedParticles succeeds", run.returncode == 0,
+            (run.stdout + run.stderr)[-2000:])
+    if run.returncode != 0:
+        return
+    cloud = read_cloud(case, "0", "gate")
+    n = cloud.get("normal", [])
+    t.check_equal("normal: a gate 4 x 30 particles", len(n), 120)
+    t.check("normal: (-1 0) on every particle",
+            n and all(abs(v[0] + 1) < 1e-12 and abs(v[1]) < 1e-12
+                      for v in n), str(n[:3]))
+    for what, entry, words in (
+            ("zero", "normal (0 0 0);", ["normal", "non-zero"]),
+            ("out of the plane", "normal (0 0 1);", ["normal", "plane"])):
+        bad = gate.replace("normal (-2 0 0);", entry)
+        run = seedCase.seed(case, "bodies\n{\n%s}\n" % bad)
+        out = run.stdout + run.stderr
+        t.check("normal: %s refused naming %s" % (what, words),
+                run.returncode != 0 and all(w in out for w in words),
+                out[-1500:])
+    walls = ("    tank { spacing %g; density 1000; patches (walls); layers 2;"
+             " normal (1 0 0); }\n" % DX)
+    run = seedCase.seed(case, "bodies\n{\n%s}\n" % walls)
+    out = run.stdout + run.stderr
+    t.check("normal: on wall layers refused naming the keyword",
+            run.returncode != 0 and "'normal'" in out and "tank" in out,
+            out[-1500:])
+
+
 if __name__ == "__main__":
-    sys.exit(run_parts("seedRegions", check_3d, check_2d))
+    sys.exit(run_parts("seedRegions", check_3d, check_2d, check_normal))

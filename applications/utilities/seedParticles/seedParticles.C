@@ -61,6 +61,16 @@ Usage
             //                                  // particleRelaxation
         }
 
+        // A wall body seeded in a region (a gate plate of ghost particles)
+        // takes a uniform 'normal', out of the wall into the fluid
+        gate
+        {
+            spacing   0.001;
+            density   1000;
+            region    { type cellZone; zone gate; }
+            normal    (-1 0 0);
+        }
+
         // Wall particles: 'patches' and 'layers' instead of 'region'
         walls
         {
@@ -170,6 +180,31 @@ void checkBodyKind(const word& body, const dictionary& dict)
             << " expected 'patches' instead of 'region' with it"
             << exit(FatalIOError);
     }
+    if (walls && dict.found("normal"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Body " << body << ": entry 'normal' belongs to bodies seeded"
+            << " in a region: wall layers take theirs from their patches"
+            << exit(FatalIOError);
+    }
+}
+
+//- A region's uniform wall normal ('normal', optional): a unit vector
+//  out of the wall into the fluid, or zero when absent
+vector regionNormal(const word& body, const dictionary& dict, const label dim)
+{
+    if (!dict.found("normal")) return Zero;
+    const vector n(dict.get<vector>("normal"));
+    const scalar len = mag(n);
+    if (len < SMALL || (dim == 2 && mag(n.z()) > SMALL*len))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Body " << body << ": entry 'normal' is " << n
+            << ": expected a non-zero vector"
+            << (dim == 2 ? " in the 2D case's plane (z = 0)" : "")
+            << exit(FatalIOError);
+    }
+    return n/len;
 }
 
 //- The scene's periodic directions (constant/particleProperties' 'periodic'
@@ -331,6 +366,7 @@ int main(int argc, char *argv[])
         const vector offset =
             dict.getOrDefault<vector>("offset", vector(0.5, 0.5, 0.5));
         checkBodyKind(body, dict);
+        const vector uniformNormal(regionNormal(body, dict, dim));
         const seedLattice lattice(meshBb.min(), dx, offset, dim, zPlane);
 
         DynamicList<point> pts;
@@ -381,6 +417,15 @@ int main(int argc, char *argv[])
             {
                 for (label c = 0; c < dim; ++c) n(i, c) = normals[i][c];
                 d(i, 0) = distances[i];
+            }
+        }
+        else if (mag(uniformNormal) > 0)
+        {
+            particleField& n =
+                set.addField("normal", particleField::kind::vector);
+            forAll(pts, i)
+            {
+                for (label c = 0; c < dim; ++c) n(i, c) = uniformNormal[c];
             }
         }
 
