@@ -26,7 +26,11 @@ Description
       - the normalised viscous Laplacian (viscousLaplacian normalised) is
         exact (1e-10) for a quadratic field at the interior particles of a
         lattice, where the Morris form is 3-4 % low (on relaxed particles
-        the Taylor-Green tutorial checks its decay rate).
+        the Taylor-Green tutorial checks its decay rate);
+      - the wall head (a_i^prior - a_w) . x_iw takes a no-slip wall's whole
+        acceleration and a free-slip wall's normal part only (a gate
+        lifted out of the water sets no pressure gradient in it), to
+        round-off.
 
 \*---------------------------------------------------------------------------*/
 
@@ -504,4 +508,32 @@ TEST(riemannEquations, coarseGrainedFinerSolidSumsAsTheFluidsOwnLattice)
     }
     EXPECT_LT(cellsErr, 1e-12);
     EXPECT_GT(particlesErr, 1e-2);      // 1.6 % on the undeformed lattice
+}
+
+
+TEST(riemannEquations, freeSlipWallHeadTakesOnlyTheWallsNormalAcceleration)
+{
+    // A fluid particle under gravity next to a wall particle of normal -x
+    // accelerating along (3, 144) m/s^2 (a gate lifted out of the water)
+    const std::vector<double> aPrior{0.0, -9.81};
+    const std::vector<double> aw{3.0, 144.0};
+    const std::vector<double> n{-1.0, 0.0};
+    const std::vector<double> U{0.0, 0.0};
+    const vectorD<2> x(0.002, 0.001);
+    const sourceData fixedWall
+        {false, nullptr, nullptr, U.data(), nullptr, n.data(), false, false,
+         nullptr, nullptr};
+    const sourceData noSlip
+        {false, nullptr, nullptr, U.data(), aw.data(), n.data(), true, false,
+         nullptr, nullptr};
+    const sourceData freeSlip
+        {false, nullptr, nullptr, U.data(), aw.data(), n.data(), false, false,
+         nullptr, nullptr};
+    const double tol = 1e-15;
+    EXPECT_NEAR(wallHead<2>(aPrior.data(), fixedWall, 0, 0, x),
+        -9.81*0.001, tol);
+    EXPECT_NEAR(wallHead<2>(aPrior.data(), noSlip, 0, 0, x),
+        -3.0*0.002 + (-9.81 - 144.0)*0.001, tol);
+    EXPECT_NEAR(wallHead<2>(aPrior.data(), freeSlip, 0, 0, x),
+        -3.0*0.002 - 9.81*0.001, tol);
 }
