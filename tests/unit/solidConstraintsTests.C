@@ -12,7 +12,9 @@ Description
     mirror images' displacement and velocity (the displacement of the odd
     extension vanishes on the face), a load's resultant acts on the face
     (sum m a = F, first moment at the face) through moving least squares
-    weights.
+    weights. A motion constraint puts its particles where a
+    solidBodyMotionFunction (a roll) takes them, with the velocity omega x r
+    (1e-8), and at their reference positions at time 0.
 
 \*---------------------------------------------------------------------------*/
 
@@ -21,6 +23,7 @@ Description
 #include "unitCube.H"
 #include "solidConstraints.H"
 #include "smoothingKernel.H"
+#include "septernion.H"
 
 using namespace Foam;
 using namespace Foam::meshless;
@@ -292,3 +295,76 @@ TEST(solidConstraints, badInputNamesTheConstraint)
 
 
 // ************************************************************************* //
+
+
+TEST(solidConstraints, motionFollowsTheRigidTransformation)
+{
+    // A roll about the z axis through (0.5, 0, 0): theta(t) = 4 deg sin(w t)
+    meshlessTest::unitCube cube(4);
+    solidBlock b;
+    const dictionary dict(meshlessTest::dictFrom
+    (
+        "constraints"
+        "{"
+        "    foot"
+        "    {"
+        "        type motion;"
+        "        region { type box; min (-1 -1 -1); max (2 0.2 2); }"
+        "        motion"
+        "        {"
+        "            solidBodyMotionFunction oscillatingRotatingMotion;"
+        "            oscillatingRotatingMotionCoeffs"
+        "            { origin (0.5 0 0); amplitude (0 0 4); omega 5; }"
+        "        }"
+        "    }"
+        "}"
+    ));
+    const solidConstraints sc(dict, b.set, *b.X0, cube.mesh);
+    ASSERT_EQ(sc.count()[0], 200);      // y = 0.05, 0.15
+
+    particleField& x = b.set.positions();
+    particleField& U = b.set.addField("U", particleField::kind::vector);
+    x.fill(7);
+    U.fill(3);
+    const scalar t = 0.3;
+    sc.prescribe(t, *b.X0, x, U);
+
+    const scalar A = 4*constant::mathematical::pi/180, w = 5;
+    const scalar theta = A*std::sin(w*t), omega = A*w*std::cos(w*t);
+    const scalar c = std::cos(theta), s = std::sin(theta);
+    label nMoved = 0;
+    for (label i = 0; i < b.set.size(); ++i)
+    {
+        const scalar X = (*b.X0)(i, 0) - 0.5, Y = (*b.X0)(i, 1);
+        if (Y > 0.2)
+        {
+            EXPECT_EQ(x(i, 0), 7);
+            EXPECT_TRUE(sc.isFree(i));
+            continue;
+        }
+        ++nMoved;
+        EXPECT_FALSE(sc.isFree(i));
+        // Rotation by theta about the origin's z axis (counterclockwise)
+        const scalar rx = x(i, 0) - 0.5, ry = x(i, 1);
+        const scalar sense = 1;
+        EXPECT_NEAR(rx, c*X - sense*s*Y, 1e-12);
+        EXPECT_NEAR(ry, sense*s*X + c*Y, 1e-12);
+        EXPECT_NEAR(x(i, 2), (*b.X0)(i, 2), 1e-12);
+        // Velocity omega x r (central difference over 2e-6 s)
+        EXPECT_NEAR(U(i, 0), -sense*omega*ry, 1e-8);
+        EXPECT_NEAR(U(i, 1), sense*omega*rx, 1e-8);
+        EXPECT_NEAR(U(i, 2), 0, 1e-8);
+    }
+    EXPECT_EQ(nMoved, 200);
+
+    // At t = 0 the particles are at their reference positions
+    sc.prescribe(0, *b.X0, x, U);
+    for (label i = 0; i < b.set.size(); ++i)
+    {
+        if ((*b.X0)(i, 1) > 0.2) continue;
+        for (label k = 0; k < 3; ++k)
+        {
+            EXPECT_NEAR(x(i, k), (*b.X0)(i, k), 1e-14);
+        }
+    }
+}

@@ -6,12 +6,15 @@
 #include "seedRegion.H"
 #include "meshSearch.H"
 #include "movingLeastSquares.H"
+#include "solidBodyMotionFunction.H"
+#include "Time.H"
 
 const Foam::Enum<Foam::meshless::solidConstraints::kind>
 Foam::meshless::solidConstraints::kindNames
 ({
     { kind::clamped, "clamped" },
     { kind::displacement, "displacement" },
+    { kind::motion, "motion" },
     { kind::load, "load" },
 });
 
@@ -83,7 +86,41 @@ Foam::meshless::solidConstraints::solidConstraints
         names_.append(e.keyword());
         kinds_.append(kindNames.get("type", d));
         functions_.resize(c + 1);
-        if (kinds_[c] == kind::displacement)
+        motions_.resize(c + 1);
+        inverseAtZero_.resize(c + 1, septernion::I);
+        if (kinds_[c] == kind::motion)
+        {
+            if (!d.isDict("motion"))
+            {
+                FatalIOErrorInFunction(d)
+                    << "constraint " << e.keyword() << " (type motion):"
+                    << " expected a dictionary 'motion' naming a"
+                    << " solidBodyMotionFunction and its coefficients"
+                    << " (motion { solidBodyMotionFunction rotatingMotion;"
+                    << " ... })" << exit(FatalIOError);
+            }
+            if (!motionTime_.valid())
+            {
+                // From the case's controlDict in memory: reads no file
+                const Time& runTime = mesh.time();
+                motionTime_.reset
+                (
+                    new Time
+                    (
+                        runTime.controlDict(), runTime.rootPath(),
+                        runTime.caseName(), "system", "constant", false, false
+                    )
+                );
+            }
+            motions_.set
+            (
+                c,
+                solidBodyMotionFunction::New(d.subDict("motion"), *motionTime_)
+            );
+            inverseAtZero_[c] = septernion::I;
+            inverseAtZero_[c] = inv(motionAt(c, 0));
+        }
+        else if (kinds_[c] == kind::displacement)
         {
             functions_.set(c, Function1<vector>::New("displacement", d));
         }
@@ -133,7 +170,7 @@ Foam::meshless::solidConstraints::solidConstraints
         const dictionary* faceDict = d.findDict("face");
         if (faceDict)
         {
-            if (kinds_[c] == kind::displacement)
+            if (kinds_[c] == kind::displacement || kinds_[c] == kind::motion)
             {
                 FatalIOErrorInFunction(d)
                     << "constraint " << e.keyword() << ": 'face' is for"
@@ -185,6 +222,12 @@ Foam::meshless::solidConstraints::solidConstraints
         }
     }
 }
+
+
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * //
+
+Foam::meshless::solidConstraints::~solidConstraints()
+{}
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -311,6 +354,17 @@ Foam::vector Foam::meshless::solidConstraints::value
 }
 
 
+Foam::septernion Foam::meshless::solidConstraints::motionAt
+(
+    const label c,
+    const scalar t
+) const
+{
+    motionTime_->setTime(t, 0);
+    return motions_[c].transformation()*inverseAtZero_[c];
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::meshless::solidConstraints::prescribe
@@ -334,11 +388,37 @@ void Foam::meshless::solidConstraints::prescribe
               /(t + dt - max(t - dt, 0.0));
     }
 
+    // Rigid motions: the transformations at t and t -/+ dm (central
+    // differences of the positions give the velocities)
+    const scalar dm = 1e-6;
+    List<septernion> Tm(names_.size()), Tc(names_.size()), Tp(names_.size());
+    forAll(names_, c)
+    {
+        if (kinds_[c] != kind::motion) continue;
+        Tm[c] = motionAt(c, t - dm);
+        Tc[c] = motionAt(c, t);
+        Tp[c] = motionAt(c, t + dm);
+    }
+
     const label n = x.size();
     for (label i = 0; i < n; ++i)
     {
         const label c = label((*index_)(i, 0));
         if (c < 0 || kinds_[c] == kind::load) continue;
+        if (kinds_[c] == kind::motion)
+        {
+            vector p0(Zero);
+            for (label k = 0; k < dim_; ++k) p0[k] = X0(i, k);
+            const vector xc = Tc[c].transformPoint(p0);
+            const vector v =
+                (Tp[c].transformPoint(p0) - Tm[c].transformPoint(p0))/(2*dm);
+            for (label k = 0; k < dim_; ++k)
+            {
+                x(i, k) = xc[k];
+                U(i, k) = v[k];
+            }
+            continue;
+        }
         const label j = partner_.empty() ? -1 : partner_[i];
         if (j >= 0)
         {
