@@ -291,6 +291,22 @@ TEST(solidConstraints, badInputNamesTheConstraint)
         " region { type box; min (0 0 0); max (1 1 1); } } }"
     );
     EXPECT_NE(noForce.find("force"), std::string::npos) << noForce;
+
+    const std::string notDict = failure
+    (
+        "constraints { foot { type motion; motion rotatingMotion;"
+        " region { type box; min (0 0 0); max (1 1 1); } } }"
+    );
+    EXPECT_NE(notDict.find("foot"), std::string::npos) << notDict;
+    EXPECT_NE(notDict.find("'motion'"), std::string::npos) << notDict;
+
+    const std::string unknown = failure
+    (
+        "constraints { foot { type motion;"
+        " motion { solidBodyMotionFunction spinning; }"
+        " region { type box; min (0 0 0); max (1 1 1); } } }"
+    );
+    EXPECT_NE(unknown.find("spinning"), std::string::npos) << unknown;
 }
 
 
