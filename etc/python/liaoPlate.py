@@ -1,0 +1,154 @@
+"""Dam break on an elastic plate (Liao, Hu and Sueyoshi 2015), shared by
+the liaoPlate tutorials of every solver (the same scene).
+
+    from liaoPlate import validate
+    sys.exit(validate(here, "riemannSphFoam", 0.001, fluid_ratio=2))
+
+No measured time series of the plate is public (BENCHMARKS.md): the case
+is a violent one, checked for stability, and its tip history is compared
+between the solvers. Reads the tip's displacement written by the
+pointDisplacement monitor 'tip' (the experiment's marker, 0.0875 m above
+the floor on the plate's centre line; a run and its restarts) and reports
+the time of impact (tip x past 1 mm), the first peak of x and its time,
+the largest x, and the mean and range of x over the last 0.2 s.
+
+Writes validation/tip.dat (or tip-dx<spacing>.dat for a spacing other
+than the tutorial's), the tip history every 2 ms, which the other
+solvers' validations read to plot it beside theirs; validation/result.md
+(result-dx<spacing>.md) with the figures, particles per body, steps,
+solid sub-steps and wall time from the run cost (postProcessing/runCost);
+and tip[-dx<spacing>].png: this run, this solver's other spacings and the
+other solvers' tip.dat.
+
+Applies fsiChecks' stability checks (run to the end, no particle lost,
+water in the tank below its walls' top and not in the plate, energy not
+growing, the plate's particle-scale velocity noise below 0.1 sqrt(g H))
+and the coupling's momentum balance (the water's force on the plate and
+the plate's on the water cancel to 1e-9 of it at every step).
+
+With --check, exits 1 when a check is missed.
+
+Usage of a tutorial's validate.py: validate.py <case> [--check]
+"""
+import math
+import os
+
+from foamMonitor import (arguments, case_spacing, pyplot, read_monitor,
+                         result_suffix, run_cost, wall_time)
+from fsiChecks import (check_rows, momentum_exchange, print_checks,
+                       stability_checks)
+from solverComparison import (other_solvers, own_spacings, resample,
+                              write_history)
+
+H = 0.4             # water column height [m]
+W = 0.2             # water column width [m]
+TANK = (0.0, 0.8)   # tank's side walls [m]
+WALLS_TOP = 0.6     # the walls' top: the tank is open above [m]
+IMPACT = 0.001      # tip x that marks the impact [m]
+SAMPLE = 0.002      # interval of tip.dat [s]
+
+
+def figures(ts, xs):
+    """Impact time, first peak (value, time), largest x (value, time) and
+    the mean and range of x over the last 0.2 s"""
+    impact = next((t for t, x in zip(ts, xs) if x > IMPACT), math.nan)
+    first = (math.nan, math.nan)
+    for k in range(1, len(xs) - 1):
+        if ts[k] > impact and xs[k] > IMPACT and xs[k - 1] < xs[k] >= xs[k + 1]:
+            first = (xs[k], ts[k])
+            break
+    k = max(range(len(xs)), key=lambda i: xs[i])
+    tail = [x for t, x in zip(ts, xs) if t >= ts[-1] - 0.2]
+    return {"impact": impact, "first": first, "largest": (xs[k], ts[k]),
+            "mean": sum(tail) / len(tail), "range": (min(tail), max(tail))}
+
+
+def validate(here, solver, default_dx, fluid_ratio=1, doc=None):
+    """Validate the case named on the command line: 'here' is the
+    tutorial's validation folder, 'solver' names the curve, default_dx is
+    the plate's spacing of the tutorial's default run and fluid_ratio the
+    water's spacing over the plate's. Returns the exit code (1 with
+    --check when a check is missed)."""
+    case, check = arguments(doc or __doc__)
+    sim = read_monitor(case, "tip")    # a run and its restarts
+    ts, xs, ys = sim["time"], sim["dx"], sim["dy"]
+    dx = case_spacing(case, default_dx)
+    suffix = result_suffix(dx, default_dx)
+    fig = figures(ts, xs)
+    cost = run_cost(case)
+    sub = cost["subSteps"].get("coupling", {}).get("most", 1)
+
+    own = os.path.join(here, "tip%s.dat" % suffix)
+    write_history(own, ["liaoPlate tip (0.598, 0.0875) m, %s, plate spacing"
+                        " %g m, water %g m" % (solver, dx, fluid_ratio * dx),
+                        "t [s]  x [m]  y [m]"],
+                  resample(SAMPLE, ts, xs, ys))
+
+    lines = [
+        "impact (tip x > %g m) at %.3f s" % (IMPACT, fig["impact"]),
+        "first peak of tip x %.4f m at %.3f s" % fig["first"],
+        "largest tip x %.4f m at %.3f s" % fig["largest"],
+        "tip x over the last 0.2 s: mean %.4f m, %.4f .. %.4f m"
+        % ((fig["mean"],) + fig["range"]),
+    ]
+    for line in lines:
+        print(line)
+
+    # potential energy of the column: rho g H^2 W / 2 [J/m]
+    checks = stability_checks(case, "plate", TANK, fluid_ratio * dx,
+                              1000 * 9.81 * H ** 2 * W / 2,
+                              velocity_scale=math.sqrt(9.81 * H),
+                              walls_top=WALLS_TOP, solid_dx=dx)
+    balance = momentum_exchange(case, floor=1e-6)
+    checks.append(("the water's force on the plate and the plate's on the"
+                   " water cancel (largest |F_fs + F_sf|/|F_fs| %.1e"
+                   " <= 1e-9)" % balance, balance <= 1e-9))
+    print_checks(checks)
+
+    with open(os.path.join(here, "result%s.md" % suffix), "w") as f:
+        f.write("# liaoPlate (%s): dam break on an elastic plate\n\n"
+                % solver)
+        f.write("Plate spacing %g m (%d particles through its 0.004 m),"
+                " water %g m, run to %.3f s. No measured history is public:"
+                " the figures are for comparing solvers and resolutions,"
+                " the checks are the targets.\n\n"
+                % (dx, round(0.004 / dx), fluid_ratio * dx, ts[-1]))
+        f.write("| quantity | value |\n|---|---|\n")
+        f.write("| impact (tip x > %g m) | %.3f s |\n"
+                % (IMPACT, fig["impact"]))
+        f.write("| first peak of tip x | %.4f m at %.3f s |\n" % fig["first"])
+        f.write("| largest tip x | %.4f m at %.3f s |\n" % fig["largest"])
+        f.write("| tip x over the last 0.2 s | mean %.4f m, %.4f .. %.4f m"
+                " |\n" % ((fig["mean"],) + fig["range"]))
+        for name, b in sorted(cost["bodies"].items()):
+            f.write("| particles: %s (%s) | %d |\n"
+                    % (name, b["model"], b["particles"]))
+        f.write("| fluid steps | %d |\n" % cost["steps"])
+        f.write("| solid sub-steps per fluid step (max) | %d |\n" % sub)
+        f.write("| wall time | %s%s |\n"
+                % (wall_time(cost), "" if cost["runs"] == 1 else
+                   " in %d runs (restarts)" % cost["runs"]))
+        f.write("\n| check | |\n|---|---|\n")
+        f.write("".join(row + "\n" for row in check_rows(checks)))
+
+    plt = pyplot()
+    if plt is not None:
+        figure, ax = plt.subplots(figsize=(8, 4.5))
+        ax.plot(ts, xs, "-", lw=1.8, label="%s, dx = %g m (this run)"
+                % (solver, dx))
+        for tag, rows in own_spacings(here, "tip", own):
+            ax.plot([r[0] for r in rows], [r[1] for r in rows], "--",
+                    lw=1, label="%s, %s" % (solver, tag))
+        for other, rows in other_solvers(here, "liaoPlate", solver):
+            ax.plot([r[0] for r in rows], [r[1] for r in rows], "-", lw=1.2,
+                    label="%s (its tutorial's run)" % other)
+        ax.set_xlabel("t [s]")
+        ax.set_ylabel("tip x displacement [m]")
+        ax.set_title("Liao et al. 2015 plate, marker at 0.0875 m")
+        ax.grid(True)
+        ax.legend(fontsize=8)
+        figure.tight_layout()
+        figure.savefig(os.path.join(here, "tip%s.png" % suffix), dpi=100)
+
+    met = all(good for _, good in checks)
+    return 1 if check and not met else 0

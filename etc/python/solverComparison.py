@@ -1,0 +1,70 @@
+"""Histories of a scene that the solvers' tutorials share (liaoPlate,
+rollingTankBaffle), written by each tutorial's validation as a small text
+file and read by the others' to plot beside their own: no measured history
+exists for these scenes, so the solvers are compared with each other.
+
+    from solverComparison import (resample, write_history, read_history,
+                                  other_solvers)
+    write_history(path, header, resample(step, ts, xs, ys))
+    for solver, rows in other_solvers(here, "liaoPlate", "riemannSphFoam"):
+        ...
+"""
+import glob
+import math
+import os
+
+from foamMonitor import interp
+
+
+def resample(step, ts, *series):
+    """Each series of ts linearly interpolated every 'step' seconds from 0
+    to the last time: [(t, v1, v2, ...)]"""
+    n = int(math.floor(ts[-1] / step + 1e-9))
+    return [(k * step,) + tuple(interp(k * step, ts, s) for s in series)
+            for k in range(n + 1)]
+
+
+def write_history(path, header, rows):
+    """Rows of numbers, after the header's lines as '#' comments"""
+    with open(path, "w") as f:
+        for line in header:
+            f.write("# %s\n" % line)
+        for row in rows:
+            f.write(" ".join("%.6e" % v for v in row) + "\n")
+
+
+def read_history(path):
+    """The rows of write_history, '#' lines skipped: [(t, v1, ...)]"""
+    rows = []
+    for line in open(path):
+        if line.strip() and not line.startswith("#"):
+            rows.append(tuple(float(v) for v in line.split()))
+    return rows
+
+
+def other_solvers(here, scene, solver, name="tip.dat"):
+    """[(other solver, rows)] of every other solver's tutorial of the scene
+    whose validation has the history 'name' (its default run), 'here'
+    being this tutorial's validation folder
+    (tutorials/<solver>/<scene>/validation)"""
+    tutorials = os.path.abspath(os.path.join(here, "..", "..", ".."))
+    out = []
+    for path in sorted(glob.glob(os.path.join(tutorials, "*", scene,
+                                              "validation", name))):
+        other = path.split(os.sep)[-4]
+        if other != solver:
+            out.append((other, read_history(path)))
+    return out
+
+
+def own_spacings(here, name, own):
+    """[(label, rows)] of this tutorial's other histories of the same kind
+    (<name>.dat of the default spacing, <name>-dx<spacing>.dat of others)
+    but the file 'own' just written"""
+    out = []
+    for path in sorted(glob.glob(os.path.join(here, name + "*.dat"))):
+        if os.path.abspath(path) == os.path.abspath(own):
+            continue
+        tag = os.path.basename(path)[len(name):-len(".dat")].lstrip("-")
+        out.append((tag or "default spacing", read_history(path)))
+    return out
