@@ -38,7 +38,7 @@ from foamMonitor import (arguments, case_spacing, pyplot, read_monitor,
 from fsiChecks import (check_rows, momentum_exchange, print_checks,
                        stability_checks)
 from solverComparison import (other_solvers, own_spacings, resample,
-                              write_history)
+                              step_rows, write_history)
 
 H = 0.4             # water column height [m]
 W = 0.2             # water column width [m]
@@ -76,7 +76,6 @@ def validate(here, solver, default_dx, fluid_ratio=1, doc=None):
     suffix = result_suffix(dx, default_dx)
     fig = figures(ts, xs)
     cost = run_cost(case)
-    sub = cost["subSteps"].get("coupling", {}).get("most", 1)
 
     own = os.path.join(here, "tip%s.dat" % suffix)
     write_history(own, ["liaoPlate tip (0.598, 0.0875) m, %s, plate spacing"
@@ -123,8 +122,8 @@ def validate(here, solver, default_dx, fluid_ratio=1, doc=None):
         for name, b in sorted(cost["bodies"].items()):
             f.write("| particles: %s (%s) | %d |\n"
                     % (name, b["model"], b["particles"]))
-        f.write("| fluid steps | %d |\n" % cost["steps"])
-        f.write("| solid sub-steps per fluid step (max) | %d |\n" % sub)
+        for what, value in step_rows(cost, "water"):
+            f.write("| %s | %s |\n" % (what, value))
         f.write("| wall time | %s%s |\n"
                 % (wall_time(cost), "" if cost["runs"] == 1 else
                    " in %d runs (restarts)" % cost["runs"]))

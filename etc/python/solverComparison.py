@@ -68,3 +68,24 @@ def own_spacings(here, name, own):
         tag = os.path.basename(path)[len(name):-len(".dat")].lstrip("-")
         out.append((tag or "default spacing", read_history(path)))
     return out
+
+
+def step_rows(cost, fluid):
+    """Rows (quantity, value) of a coupled run's steps from run_cost:
+    advection steps, the fluid's acoustic steps (its sub-steps, when it
+    takes them), and the solid's steps per fluid (acoustic) step (the
+    coupling's sub-steps; one when the solid is implicit and takes the
+    fluid's)"""
+    rows = [("fluid steps (advection)", "%d" % cost["steps"])]
+    own = cost["subSteps"].get(fluid)
+    if own is not None:
+        rows.append(("acoustic steps", "%d (%.2f per advection step, at"
+                     " most %d)" % (round(own["mean"] * cost["steps"]),
+                                    own["mean"], own["most"])))
+    solid = cost["subSteps"].get("coupling")
+    rows.append(("solid steps per %s step" % ("fluid" if own is None else
+                                               "acoustic"),
+                 "one (the solid's step is"
+                 " the fluid's)" if solid is None else
+                 "%.2f (at most %d)" % (solid["mean"], solid["most"])))
+    return rows
