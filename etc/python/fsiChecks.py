@@ -133,6 +133,32 @@ def velocity_noise(case, body, dx):
     return worst
 
 
+def written_times_checks(case, series, fluid, solid, dx, visit=None):
+    """[(what, met)] over the written times of series (times(case)): the
+    fluid and the solid keep their particles; no fluid particle closer
+    than dx/4 to a solid particle (inside the solid). visit(value, name,
+    fluid_positions), when given, is called at each time read (a scene's
+    own checks on the same pass)"""
+    n0 = {b: len(read_positions(case, series[0][1], b))
+          for b in (fluid, solid)}
+    lost, closest = None, math.inf
+    for value, name in series:
+        fl = read_positions(case, name, fluid)
+        so = read_positions(case, name, solid)
+        if len(fl) != n0[fluid] or len(so) != n0[solid]:
+            lost = value
+            break
+        closest = min(closest, closest_distance(fl, so, dx))
+        if visit is not None:
+            visit(value, name, fl)
+    return [("%s and %s keep their %d and %d particles (%d written times)%s"
+             % (fluid, solid, n0[fluid], n0[solid], len(series),
+                "" if lost is None else ": lost at %g s" % lost),
+             lost is None),
+            ("no %s particle inside the %s (closest %.2f dx > 0.25 dx)"
+             % (fluid, solid, closest / dx), closest > 0.25 * dx)]
+
+
 def stability_checks(case, solid, tank, dx, energy_scale, fluid="water",
                      velocity_scale=None, walls_top=None, solid_dx=None):
     """[(what, met)] for a run of the fluid 'fluid' on the solid 'solid':
@@ -163,20 +189,7 @@ def stability_checks(case, solid, tank, dx, energy_scale, fluid="water",
     checks = [("ran to endTime %g s (last time %g s)" % (end_time(case), t1),
                abs(t1 - end_time(case)) < 1e-9)]
 
-    n0 = {b: len(read_positions(case, series[0][1], b))
-          for b in (fluid, solid)}
-    lost, closest = None, math.inf
-    for value, name in series:
-        fl = read_positions(case, name, fluid)
-        so = read_positions(case, name, solid)
-        if len(fl) != n0[fluid] or len(so) != n0[solid]:
-            lost = value
-            break
-        closest = min(closest, closest_distance(fl, so, dx))
-    checks.append(("%s and %s keep their %d and %d particles (%d written"
-                   " times)%s" % (fluid, solid, n0[fluid], n0[solid],
-                                  len(series), "" if lost is None else
-                                  ": lost at %g s" % lost), lost is None))
+    checks += written_times_checks(case, series, fluid, solid, dx)
     fl = read_positions(case, series[-1][1], fluid)
     top = math.inf if walls_top is None else walls_top
     above = [p for p in fl if p[1] >= top]
@@ -192,8 +205,6 @@ def stability_checks(case, solid, tank, dx, energy_scale, fluid="water",
                 % (fluid, walls_top, depth / dx, len(above),
                    sum(1 for p in above if not tank[0] <= p[0] <= tank[1])))
     checks.append((what, depth < 0.5 * dx))
-    checks.append(("no %s particle inside the %s (closest %.2f dx > 0.25 dx)"
-                   % (fluid, solid, closest / dx), closest > 0.25 * dx))
 
     total = energy_total(case)
     rise = max(total) - total[0]

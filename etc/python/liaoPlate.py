@@ -34,11 +34,11 @@ import math
 import os
 
 from foamMonitor import (arguments, case_spacing, pyplot, read_monitor,
-                         result_suffix, run_cost, wall_time)
+                         result_suffix, run_cost)
 from fsiChecks import (check_rows, momentum_exchange, print_checks,
                        stability_checks)
-from solverComparison import (other_solvers, own_spacings, resample,
-                              step_rows, write_history)
+from solverComparison import (cost_rows, other_solvers, own_spacings,
+                              resample, write_history)
 
 H = 0.4             # water column height [m]
 W = 0.2             # water column width [m]
@@ -54,7 +54,8 @@ def figures(ts, xs):
     impact = next((t for t, x in zip(ts, xs) if x > IMPACT), math.nan)
     first = (math.nan, math.nan)
     for k in range(1, len(xs) - 1):
-        if ts[k] > impact and xs[k] > IMPACT and xs[k - 1] < xs[k] >= xs[k + 1]:
+        if (ts[k] > impact and xs[k] > IMPACT
+                and xs[k - 1] < xs[k] >= xs[k + 1]):
             first = (xs[k], ts[k])
             break
     k = max(range(len(xs)), key=lambda i: xs[i])
@@ -119,14 +120,8 @@ def validate(here, solver, default_dx, fluid_ratio=1, doc=None):
         f.write("| largest tip x | %.4f m at %.3f s |\n" % fig["largest"])
         f.write("| tip x over the last 0.2 s | mean %.4f m, %.4f .. %.4f m"
                 " |\n" % ((fig["mean"],) + fig["range"]))
-        for name, b in sorted(cost["bodies"].items()):
-            f.write("| particles: %s (%s) | %d |\n"
-                    % (name, b["model"], b["particles"]))
-        for what, value in step_rows(cost, "water"):
+        for what, value in cost_rows(cost, "water"):
             f.write("| %s | %s |\n" % (what, value))
-        f.write("| wall time | %s%s |\n"
-                % (wall_time(cost), "" if cost["runs"] == 1 else
-                   " in %d runs (restarts)" % cost["runs"]))
         f.write("\n| check | |\n|---|---|\n")
         f.write("".join(row + "\n" for row in check_rows(checks)))
 

@@ -13,7 +13,7 @@ import glob
 import math
 import os
 
-from foamMonitor import interp
+from foamMonitor import interp, wall_time
 
 
 def resample(step, ts, *series):
@@ -88,4 +88,16 @@ def step_rows(cost, fluid):
                  "one (the solid's step is"
                  " the fluid's)" if solid is None else
                  "%.2f (at most %d)" % (solid["mean"], solid["most"])))
+    return rows
+
+
+def cost_rows(cost, fluid):
+    """Rows (quantity, value) of a coupled run's cost for its result.md:
+    the particles of each body, the steps (step_rows) and the wall time"""
+    rows = [("particles: %s (%s)" % (name, b["model"]), "%d" % b["particles"])
+            for name, b in sorted(cost["bodies"].items())]
+    rows += step_rows(cost, fluid)
+    rows.append(("wall time", "%s%s" % (wall_time(cost), "" if cost["runs"]
+                                        == 1 else " in %d runs (restarts)"
+                                        % cost["runs"])))
     return rows

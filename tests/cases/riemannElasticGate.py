@@ -17,22 +17,15 @@ import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(here), "lib"))
-from caseTest import run, run_parts, run_tutorial  # noqa: E402
+from caseTest import run_parts, run_tutorial, run_validated  # noqa: E402
 from foamMonitor import interp, read_monitor  # noqa: E402
 
 TUTORIAL = "tutorials/riemannSphFoam/elasticGate"
 
 
 def gate(t, work):
-    case, code, out = run_tutorial(t, TUTORIAL, work, "default")
-    if code != 0:
-        return
-    code, out = run(["/usr/bin/python3", "validation/validate.py", ".",
-                     "--check"], case)
-    t.check("validate.py --check: x RMS below the published curve's and"
-            " stable", code == 0, out[-2000:])
-    for line in out.splitlines():
-        print("    " + line)
+    run_validated(t, TUTORIAL, work, "default",
+                  what="x RMS below the published curve's and stable")
 
 
 def explicit(t, work):

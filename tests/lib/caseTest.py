@@ -105,6 +105,21 @@ def run_tutorial(t, tutorial, work, name, args=(), end=None, entries=(),
     return case, code, out
 
 
+def run_validated(t, tutorial, work, name, args=(), what="stable"):
+    """run_tutorial, then its validation/validate.py --check (checked to
+    succeed, 'what' naming what it checks), its lines printed; returns the
+    case, or None when the run failed"""
+    case, code, out = run_tutorial(t, tutorial, work, name, args)
+    if code != 0:
+        return None
+    code, out = run(["/usr/bin/python3", "validation/validate.py", ".",
+                     "--check"], case)
+    t.check("validate.py --check: %s" % what, code == 0, out[-2000:])
+    for line in out.splitlines():
+        print("    " + line)
+    return case
+
+
 def set_entry(case, dict_file, entry, value):
     """foamDictionary -entry <entry> -set <value> on a case dictionary."""
     code, out = run(["foamDictionary", dict_file, "-entry", entry, "-set",
