@@ -39,6 +39,23 @@ from fsiChecks import check_rows, print_checks, stability_checks
 PUBLISHED_X = 0.0083    # best published RMS of x [m] (Khayyer 2018)
 
 
+def rms_errors(case, here):
+    """{"x": (RMS, points), "y": (RMS, points)}: the free end's x(t) and
+    y(t) of the case (monitor freeEnd) interpolated linearly to the
+    experiment's times inside the run (here: the folder of
+    antoci2007_freeEnd.dat); RMS nan without a point"""
+    sim = read_monitor(case, "freeEnd")
+    ts = sim["time"]
+    ref = read_rows(os.path.join(here, "antoci2007_freeEnd.dat"))
+    errors = {}
+    for q, series in (("x", sim["dx"]), ("y", sim["dy"])):
+        pts = [(t, v) for k, t, v in ref if k == q and 0 < t <= ts[-1]]
+        sq = [(interp(t, ts, series) - v) ** 2 for t, v in pts]
+        errors[q] = (math.sqrt(sum(sq) / len(sq)) if sq else float("nan"),
+                     len(sq))
+    return errors
+
+
 def validate(here, solver, default_dx, fluid_ratio=1, doc=None):
     """Validate the case named on the command line: 'here' is the
     tutorial's validation folder (the experiment's file, the results),
@@ -50,13 +67,7 @@ def validate(here, solver, default_dx, fluid_ratio=1, doc=None):
     sim = read_monitor(case, "freeEnd")    # a run and its restarts
     ts, dx_sim, dy_sim = sim["time"], sim["dx"], sim["dy"]
     ref = read_rows(os.path.join(here, "antoci2007_freeEnd.dat"))
-
-    errors = {}
-    for q, series in (("x", dx_sim), ("y", dy_sim)):
-        pts = [(t, v) for k, t, v in ref if k == q and 0 < t <= ts[-1]]
-        sq = [(interp(t, ts, series) - v) ** 2 for t, v in pts]
-        errors[q] = (math.sqrt(sum(sq) / len(sq)) if sq else float("nan"),
-                     len(sq))
+    errors = rms_errors(case, here)
 
     cost = run_cost(case)
     # the most solid sub-steps per fluid step the coupling took
