@@ -322,7 +322,14 @@ def report(selected, results, quick, threads, path):
              " OpenMP thread%s of this machine; the wall time is the"
              " solver's time loop from its run-cost file)."
              % (" -quick" if quick else "", threads,
-                "" if threads == 1 else "s"), ""]
+                "" if threads == 1 else "s"), "",
+             "The parts of the wall time nest (a model's share holds its"
+             " effects' and its inner steps'), so the shares do not add"
+             " up.", ""]
+    left = [s.name for s in SCENES if s not in selected]
+    if left:
+        lines += ["Not in this report (`-scene` chose the others): %s."
+                  % ", ".join(left), ""]
     failed = 0
     for scene in selected:
         rows = results[scene.name]
