@@ -224,8 +224,7 @@ def build_digest():
 
 
 def run_case(scene, method, value, work, threads, build):
-    """The case of one run (made now, or reused): (case, error, cost,
-    note)"""
+    """One run, made now or reused: (error, cost, note)"""
     tutorial = os.path.join(PROJECT, method.tutorial)
     case = os.path.join(work, scene.name, slug(method.name),
                         "%s%g" % (method.flag.lstrip("-"), value))
@@ -260,9 +259,9 @@ def run_case(scene, method, value, work, threads, build):
     try:
         cost = run_cost(case)
     except Exception as e:      # no run-cost file: the solver never ran
-        return case, math.nan, None, "no run: %s" % e
+        return math.nan, None, "no run: %s" % e
     if not cost["completed"]:
-        return case, math.nan, None, "the solver stopped at %g s" \
+        return math.nan, None, "the solver stopped at %g s" \
             % cost["time"]
     if not reuse:
         with open(stamp, "w") as f:
@@ -270,8 +269,8 @@ def run_case(scene, method, value, work, threads, build):
     try:
         error = scene.error(case, tutorial)
     except Exception as e:
-        return case, math.nan, cost, "%s; no error: %s" % (note, e)
-    return case, error, cost, note
+        return math.nan, cost, "%s; no error: %s" % (note, e)
+    return error, cost, note
 
 
 def order(points):
@@ -447,8 +446,8 @@ def main(argv):
                 continue
             ladder = method.ladder[:2] if quick else method.ladder
             for value in ladder:
-                case, error, cost, note = run_case(scene, method, value,
-                                                   work, threads, build)
+                error, cost, note = run_case(scene, method, value, work,
+                                             threads, build)
                 print("%s, %s, %s: error %s, %s (%s)"
                       % (scene.name, method.name, label(method, value),
                          "%.4g" % error, "%.1f s" % cost["wall"] if cost

@@ -37,8 +37,8 @@ from foamMonitor import (arguments, case_spacing, pyplot, read_monitor,
                          result_suffix, run_cost)
 from fsiChecks import (check_rows, momentum_exchange, print_checks,
                        stability_checks)
-from solverComparison import (cost_rows, other_solvers, own_spacings,
-                              resample, write_history)
+from solverComparison import (cost_rows, plot_comparison, resample,
+                              write_history)
 
 H = 0.4             # water column height [m]
 W = 0.2             # water column width [m]
@@ -130,12 +130,7 @@ def validate(here, solver, default_dx, fluid_ratio=1, doc=None):
         figure, ax = plt.subplots(figsize=(8, 4.5))
         ax.plot(ts, xs, "-", lw=1.8, label="%s, dx = %g m (this run)"
                 % (solver, dx))
-        for tag, rows in own_spacings(here, "tip", own):
-            ax.plot([r[0] for r in rows], [r[1] for r in rows], "--",
-                    lw=1, label="%s, %s" % (solver, tag))
-        for other, rows in other_solvers(here, "liaoPlate", solver):
-            ax.plot([r[0] for r in rows], [r[1] for r in rows], "-", lw=1.2,
-                    label="%s (its tutorial's run)" % other)
+        plot_comparison(ax, here, "liaoPlate", solver, own, 1)
         ax.set_xlabel("t [s]")
         ax.set_ylabel("tip x displacement [m]")
         ax.set_title("Liao et al. 2015 plate, marker at 0.0875 m")

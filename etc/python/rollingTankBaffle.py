@@ -48,8 +48,8 @@ from foamMonitor import (arguments, case_spacing, pyplot, read_monitor,
 from fsiChecks import (check_rows, end_time, energy_total,
                        momentum_exchange, print_checks, velocity_noise,
                        written_times_checks)
-from solverComparison import (cost_rows, other_solvers, own_spacings,
-                              resample, write_history)
+from solverComparison import (cost_rows, plot_comparison, resample,
+                              write_history)
 
 LENGTH = 0.608      # tank's inner length [m]
 HEIGHT = 0.344      # tank's inner height [m]
@@ -200,12 +200,7 @@ def validate(here, solver, default_dx, fluid_ratio=1, fluid="oil",
         figure, (ax, ae) = plt.subplots(2, 1, figsize=(9, 6.5), sharex=True)
         ax.plot(ts, ds, "-", lw=1.5, label="%s, dx = %g m (this run)"
                 % (solver, dx))
-        for tag, rows in own_spacings(here, "tip", own):
-            ax.plot([r[0] for r in rows], [r[3] for r in rows], "--",
-                    lw=1, label="%s, %s" % (solver, tag))
-        for other, rows in other_solvers(here, "rollingTankBaffle", solver):
-            ax.plot([r[0] for r in rows], [r[3] for r in rows], "-", lw=1.2,
-                    label="%s (its tutorial's run)" % other)
+        plot_comparison(ax, here, "rollingTankBaffle", solver, own, 3)
         scale = max(abs(d) for d in ds) or 1.0
         ax.plot(ts, [scale * motion.angle(t) / motion.amplitude for t in ts],
                 ":", color="grey", lw=1, label="roll (scaled)")

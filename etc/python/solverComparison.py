@@ -101,3 +101,15 @@ def cost_rows(cost, fluid):
                                         == 1 else " in %d runs (restarts)"
                                         % cost["runs"])))
     return rows
+
+
+def plot_comparison(ax, here, scene, solver, own, column):
+    """Onto the axes ax: column 'column' of this tutorial's histories at
+    its other spacings (dashed) and of the other solvers' tutorials of the
+    scene (solid), 'own' being the history this run just wrote"""
+    for tag, rows in own_spacings(here, "tip", own):
+        ax.plot([r[0] for r in rows], [r[column] for r in rows], "--",
+                lw=1, label="%s, %s" % (solver, tag))
+    for other, rows in other_solvers(here, scene, solver):
+        ax.plot([r[0] for r in rows], [r[column] for r in rows], "-",
+                lw=1.2, label="%s (its tutorial's run)" % other)

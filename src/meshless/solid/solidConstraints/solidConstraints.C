@@ -117,7 +117,7 @@ Foam::meshless::solidConstraints::solidConstraints
                 c,
                 solidBodyMotionFunction::New(d.subDict("motion"), *motionTime_)
             );
-            inverseAtZero_[c] = septernion::I;
+            // (resize set it to I, so motionAt gives the raw one here)
             inverseAtZero_[c] = inv(motionAt(c, 0));
         }
         else if (kinds_[c] == kind::displacement)
