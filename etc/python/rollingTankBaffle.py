@@ -32,7 +32,9 @@ written time:
   - the fastest fluid particle below 0.1 c0 (weak compressibility holds);
   - the baffle's particle-scale velocity noise below 0.1 sqrt(g h);
   - the coupling's forces equal and opposite (1e-9) at every step.
-The roll does work on the fluid, so the energy is plotted, not bounded.
+The energy monitor sees the energies from the tank (frame tank): its
+total is the energies less the roll's work, which only the models'
+dissipation lowers; it is plotted here (tests/stability bounds it).
 
 With --check, exits 1 when a check is missed.
 
@@ -212,7 +214,7 @@ def validate(here, solver, default_dx, fluid_ratio=1, fluid="oil",
         te = read_monitor(case, "energy")["time"]
         ae.plot(te[:len(energy)], energy, "-", lw=1)
         ae.set_xlabel("t [s]")
-        ae.set_ylabel("total energy [J/m]")
+        ae.set_ylabel("total energy less the roll's work [J/m]")
         ae.grid(True)
         figure.tight_layout()
         figure.savefig(os.path.join(here, "tip%s.png" % suffix), dpi=100)

@@ -228,6 +228,42 @@ void Foam::meshless::bodyModels::ghostWall::moveTo(const scalar t)
 }
 
 
+void Foam::meshless::bodyModels::ghostWall::frameKinematics
+(
+    const scalar t,
+    const label n,
+    const label dim,
+    const double* x,
+    double* v,
+    double* a
+)
+{
+    std::fill(v, v + n*dim, 0.0);
+    std::fill(a, a + n*dim, 0.0);
+    if (!motion_.valid()) return;
+
+    // The same central differences as moveTo's
+    const scalar d = 1e-4;
+    const septernion Tm = transformationAt(t - d);
+    const septernion T0 = transformationAt(t);
+    const septernion Tp = transformationAt(t + d);
+    for (label i = 0; i < n; ++i)
+    {
+        vector p(Zero);
+        p.z() = zPlane_;
+        for (label c = 0; c < dim; ++c) p[c] = x[i*dim + c];
+        const vector X = T0.invTransformPoint(p);
+        const vector xm = Tm.transformPoint(X);
+        const vector xp = Tp.transformPoint(X);
+        for (label c = 0; c < dim; ++c)
+        {
+            v[i*dim + c] = (xp[c] - xm[c])/(2*d);
+            a[i*dim + c] = (xp[c] - 2*p[c] + xm[c])/(d*d);
+        }
+    }
+}
+
+
 template<int Dim>
 Foam::label Foam::meshless::bodyModels::ghostWall::completeFarSide
 (

@@ -7,6 +7,8 @@
 #include "bodyModel.H"
 #include "gravity.H"
 #include "restartManifest.H"
+#include "ghostWall.H"
+#include "dictionaryChecks.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -31,9 +33,33 @@ Foam::meshless::monitors::energy::energy
     const particleScene& scene
 )
 :
-    monitor(name, dict, scene)
+    monitor(name, dict, scene),
+    frame_(nullptr),
+    frameWork_(0),
+    framePower_(0),
+    frameTime_(-GREAT)
 {
     particleScene& s = const_cast<particleScene&>(scene);
+    if (dict.found("frame"))
+    {
+        const word f = dict.get<word>("frame");
+        frame_ = dynamic_cast<bodyModels::ghostWall*>(&s.body(f, dict).model());
+        if (!frame_ || !frame_->moving())
+        {
+            FatalIOErrorInFunction(dict)
+                << "frame " << f << ": expected a moving wall (model"
+                << " ghostWall with a motion dictionary), whose frame the"
+                << " energies are seen from" << exit(FatalIOError);
+        }
+        if (dict.getOrDefault<label>("interval", 1) != 1)
+        {
+            FatalIOErrorInFunction(dict)
+                << "interval " << dict.get<label>("interval")
+                << ": the frame's work is integrated over the samples,"
+                << " expected interval 1 (every step) with frame" << nl
+                << exit(FatalIOError);
+        }
+    }
     if (dict.found("bodies"))
     {
         for (const word& b : dict.get<wordList>("bodies"))
@@ -58,6 +84,12 @@ Foam::meshless::monitors::energy::energy
     const Time& runTime = scene.time();
     const dictionary* state = restartState();
     const dictionary* refs = state ? state->findDict("potential0") : nullptr;
+    if (frame_ && state && state->found("frameWork"))
+    {
+        frameWork_ = state->get<scalar>("frameWork");
+        framePower_ = state->get<scalar>("framePower");
+        frameTime_ = state->get<scalar>("frameTime");
+    }
     if (refs)
     {
         forAll(bodies_, k)
@@ -125,6 +157,12 @@ void Foam::meshless::monitors::energy::writeState(dictionary& dict) const
         refs.add(bodies_[k]->name(), potential0_[k]);
     }
     dict.add("potential0", refs);
+    if (frame_)
+    {
+        dict.add("frameWork", frameWork_);
+        dict.add("framePower", framePower_);
+        dict.add("frameTime", frameTime_);
+    }
 }
 
 
@@ -137,6 +175,7 @@ Foam::wordList Foam::meshless::monitors::energy::columns() const
         c.append(b->name() + ":strain");
         c.append(b->name() + ":potential");
     }
+    if (frame_) c.append("frame:work");
     c.append("total");
     return wordList(c);
 }
@@ -144,28 +183,70 @@ Foam::wordList Foam::meshless::monitors::energy::columns() const
 
 void Foam::meshless::monitors::energy::writeValues(Ostream& os)
 {
-    scalar total = 0;
+    const scalar t = scene_.time().value();
+    scalar total = 0, power = 0;
     forAll(bodies_, k)
     {
         const particleBody& b = *bodies_[k];
         const particleSet& set = b.particles();
-        scalar kinetic = 0;
-        if (set.found("U"))
+        const label n = set.size();
+        const label dim = set.dim();
+        const bool hasU = set.found("U");
+
+        // The tank's velocity and acceleration at the particles
+        const double* vw = nullptr;
+        if (frame_)
         {
-            const particleField& U = set.field("U");
+            vFrame_.resize(n*dim);
+            aFrame_.resize(n*dim);
+            frame_->frameKinematics
+            (
+                t, n, dim, set.positions().data(), vFrame_.data(),
+                aFrame_.data()
+            );
+            vw = vFrame_.data();
+        }
+        const effects::gravity* grav = findEffect<effects::gravity>(b);
+
+        scalar kinetic = 0;
+        if (hasU || frame_)
+        {
+            const particleField* U = hasU ? &set.field("U") : nullptr;
             const particleField& m = set.field("mass");
-            for (label i = 0; i < set.size(); ++i)
+            for (label i = 0; i < n; ++i)
             {
                 if (b.model().isImage(i)) continue;
-                scalar u2 = 0;
-                for (label c = 0; c < set.dim(); ++c) u2 += sqr(U(i, c));
+                scalar u2 = 0, p = 0;
+                for (label c = 0; c < dim; ++c)
+                {
+                    const scalar u = U ? (*U)(i, c) : 0;
+                    const scalar ur = vw ? u - vw[i*dim + c] : u;
+                    u2 += sqr(ur);
+                    if (vw)
+                    {
+                        p -= aFrame_[i*dim + c]*ur;
+                        if (grav) p -= grav->value()[c]*vw[i*dim + c];
+                    }
+                }
                 kinetic += 0.5*m(i, 0)*u2;
+                power += m(i, 0)*p;
             }
         }
         const scalar strain = b.model().strainEnergy();
         const scalar pot = potential(b) - potential0_[k];
         os << tab << kinetic << tab << strain << tab << pot;
         total += kinetic + strain + pot;
+    }
+    if (frame_)
+    {
+        if (frameTime_ > -GREAT && t > frameTime_)
+        {
+            frameWork_ += 0.5*(framePower_ + power)*(t - frameTime_);
+        }
+        framePower_ = power;
+        frameTime_ = t;
+        os << tab << frameWork_;
+        total -= frameWork_;
     }
     os << tab << total;
 }
