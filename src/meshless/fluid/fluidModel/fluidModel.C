@@ -313,6 +313,50 @@ void Foam::meshless::fluidModel::updateGeometry()
 }
 
 
+Foam::label Foam::meshless::fluidModel::releaseSplash()
+{
+    const label n = p_.size();
+    const label dim = body_.dim();
+    const label* off = own_->offsetData();
+    const label* idx = own_->indexData();
+    const double* x = body_.particles().positions().data();
+    const double R2 = sqr(body_.kernel().radius());
+    const bool compressible = soundSpeed() < GREAT;
+    const double rhoAmbient = compressible ? densityOf(0) : rho0_;
+    const double* m = mass_.data();
+    double* p = p_.data();
+    double* rho = rho_.data();
+    double* V = V_.data();
+    label released = 0;
+
+    #pragma omp parallel for schedule(static) reduction(+:released)
+    for (label i = 0; i < n; ++i)
+    {
+        if (p[i] == 0 && (!compressible || rho[i] == rhoAmbient)) continue;
+        bool alone = true;
+        for (label q = off[i]; q < off[i + 1] && alone; ++q)
+        {
+            const label j = idx[q];
+            double d2 = 0;
+            for (label c = 0; c < dim; ++c)
+            {
+                d2 += sqr(x[j*dim + c] - x[i*dim + c]);
+            }
+            alone = !(d2 < R2);
+        }
+        if (!alone) continue;
+        p[i] = 0;
+        if (compressible)
+        {
+            rho[i] = rhoAmbient;
+            V[i] = m[i]/rhoAmbient;
+        }
+        ++released;
+    }
+    return released;
+}
+
+
 void Foam::meshless::fluidModel::interpolateBoundaries()
 {
     for (boundary& b : boundaries_)

@@ -595,6 +595,7 @@ void Foam::meshless::bodyModels::isph::advanceDim
         }
     }
     if (shifting_) shift<Dim>(dt, costs);
+    releaseSplash();
 }
 
 

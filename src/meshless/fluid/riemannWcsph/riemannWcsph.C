@@ -780,6 +780,7 @@ void Foam::meshless::bodyModels::riemannWcsph::advanceDim
     for (label k = 0; k < nv; ++k) acc[k] = a0[k] + aDc[k];
 
     updatePressure();
+    releaseSplash();
     moveBoundaries(t + dt);
 }
 

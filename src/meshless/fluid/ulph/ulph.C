@@ -311,6 +311,7 @@ void Foam::meshless::bodyModels::ulph::advance
     {
         p[i] = ulphEquations::taitPressure(rho[i], rho0_, c0_, gamma_);
     }
+    releaseSplash();
 }
 
 
