@@ -34,7 +34,11 @@ Adding a method to a scene, or a scene, is one entry in SCENES.
 
 Writes result.md (result-quick.md with -quick) and one PNG per scene: the
 error (log) against the wall time (log), one line per method, each point
-labelled by its resolution. Exits 1 when a run failed or gave no finite
+labelled by its resolution; a scene may add the same probes to every run
+and report their figures beside the error (the dam break's far-wall
+pressure, an experiment of another geometry beside it), and the report
+ends with what an effect the scene does not name costs
+(benchmarks/unusedEffect). Exits 1 when a run failed or gave no finite
 error.
 """
 import collections
@@ -52,41 +56,53 @@ sys.path.insert(0, os.path.join(PROJECT, "etc", "python"))
 
 import damBreakFront  # noqa: E402
 import elasticGate  # noqa: E402
+from foamDict import read_dictionary  # noqa: E402
 from foamMonitor import pyplot, run_cost  # noqa: E402
 
 
 #: One run of the report: its method, resolution value, error, run cost
 #: (None when the run gave none) and how it came (ran, reused, failed)
-Run = collections.namedtuple("Run", "method value error cost note")
+Run = collections.namedtuple("Run", "method value error cost note reported")
 
 
 class Method:
     """A method on a scene: its name, its tutorial (project-relative), the
     Allrun flag that sets the resolution and the ladder of its values,
-    coarsest first, and the spacing a value stands for (for the order of
-    convergence: the value itself for -dx, thickness/n for -n)"""
+    coarsest first, the spacing a value stands for (for the order of
+    convergence: the value itself for -dx, thickness/n for -n), and the
+    Allrun arguments that select the method in a tutorial of another
+    (e.g. -model nosbPd)"""
 
-    def __init__(self, name, tutorial, flag, ladder, spacing=None):
+    def __init__(self, name, tutorial, flag, ladder, spacing=None,
+                 args=()):
         self.name = name
         self.tutorial = tutorial
         self.flag = flag
         self.ladder = ladder
         self.spacing = spacing or (lambda v: v)
+        self.args = list(args)
 
 
 class Scene:
     """A scene: its name, a title, what its error measures, the function
     error(case, tutorial) giving a run's error (the absolute path of the
     method's tutorial, where its reference files are), the end time every
-    run is cut to (None: the tutorials' own), and its methods"""
+    run is cut to (None: the tutorials' own), and its methods; monitors:
+    {name: dictionary text} added to every run's constant/
+    particleProperties (the same probes for every method); reported:
+    (what, function(case) giving the figures reported beside the error
+    as text, a note on the experiment beside them) or None"""
 
-    def __init__(self, name, title, measures, error, end, methods):
+    def __init__(self, name, title, measures, error, end, methods,
+                 monitors=None, reported=None):
         self.name = name
         self.title = title
         self.measures = measures
         self.error = error
         self.end = end
         self.methods = methods
+        self.monitors = monitors or {}
+        self.reported = reported
 
 
 _modules = {}
@@ -112,6 +128,48 @@ def dam_break_error(case, tutorial):
     rows = damBreakFront.front_errors(ts, xs,
                                       os.path.join(tutorial, "validation"))
     return damBreakFront.rms([r[3] - r[2] for r in rows])
+
+
+#: The dam break's wall-pressure probes: far wall (x = 4H) and back wall
+#: at y = 0.2 H, every step
+DAM_BREAK_SENSOR = ("{ type probes; body water; field p;"
+                    " points ((0.228 0.0114 0) (0 0.0114 0)); }")
+
+
+def dam_break_sensor(case):
+    """The far-wall sensor (y = 0.2 H): the impact (first p > 0.1 rho0 g
+    H) and the first peak (within sqrt(H/g) of it), in T = t sqrt(g/H)
+    and p/(rho0 g H)"""
+    from foamMonitor import monitor_rows
+    H, g, rho0 = 0.057, 9.81, 1000.0
+    _, rows = monitor_rows(case, "accuracyCostSensor")
+    scale = rho0 * g * H
+    t = [r[0] for r in rows]
+    p = [r[1] / scale for r in rows]
+    impact = next((k for k, v in enumerate(p) if v > 0.1), None)
+    if impact is None:
+        return "no impact by T = %.2f" % (t[-1] * math.sqrt(g / H))
+    window = [k for k in range(impact, len(t))
+              if t[k] <= t[impact] + math.sqrt(H / g)]
+    k = max(window, key=lambda i: p[i])
+    return "impact T = %.2f, first peak %.2f at T = %.2f" % (
+        t[impact] * math.sqrt(g / H), p[k], t[k] * math.sqrt(g / H))
+
+
+def buchner_note():
+    """Buchner's (2002) sensor P1, another geometry (H x 2H column), as the
+    Riemann dam break's validation keeps it: impact and peak"""
+    path = os.path.join(PROJECT, "tutorials", "riemannSphFoam", "damBreak",
+                        "validation", "buchnerP1.dat")
+    rows = [[float(v) for v in line.split()] for line in open(path)
+            if line.strip() and not line.startswith("#")]
+    impact = next(r[0] for r in rows if r[1] > 0.1)
+    peak = max(rows, key=lambda r: r[1])
+    return ("Buchner (2002) sensor P1, the experiment reported beside it"
+            " (another geometry: an H x 2H column in a 5.366 H tank; no"
+            " wall pressure of the square column is published): impact T ="
+            " %.2f, peak %.2f at T = %.2f (p/(rho0 g H))"
+            % (impact, peak[1], peak[0]))
 
 
 def gate_error(case, tutorial):
@@ -140,18 +198,20 @@ def hydrostatic_error(case, tutorial):
 
 # The shared scenes and the methods that run them: one line per method
 SCENES = [
-    Scene("damBreak", "Dam break, square column H = 0.057 m, to 0.17 s"
-          " (the front before the impact: the ISPH fluid's tutorial ends"
-          " there)",
+    Scene("damBreak", "Dam break, square column H = 0.057 m, to each"
+          " tutorial's end: 0.6 s (ULPH, Riemann), 0.17 s (ISPH: before"
+          " the impact, its README)",
           "RMS of the front x/H against the converged Navier-Stokes front"
-          " [H]", dam_break_error, 0.17, [
+          " [H]", dam_break_error, None, [
               Method("ULPH", "tutorials/ulphPdFoam/damBreak", "-dx",
                      (0.003, 0.002, 0.0015, 0.001)),
               Method("Riemann WCSPH", "tutorials/riemannSphFoam/damBreak",
                      "-dx", (0.003, 0.002, 0.0015, 0.001)),
               Method("ISPH", "tutorials/isphTlsphFoam/damBreak", "-dx",
                      (0.003, 0.002)),
-          ]),
+          ], monitors={"accuracyCostSensor": DAM_BREAK_SENSOR},
+          reported=("far-wall pressure, y = 0.2 H (p/(rho0 g H))",
+                    dam_break_sensor, buchner_note)),
     Scene("elasticGate", "Elastic gate (Antoci et al. 2007), to 0.4 s",
           "RMS of the free end's x(t) against the experiment [m]",
           gate_error, None, [
@@ -167,18 +227,23 @@ SCENES = [
           hydrostatic_error, None, [
               Method("Riemann WCSPH + TLSPH",
                      "tutorials/riemannSphFoam/hydrostaticPlate", "-n",
-                     (4, 6, 8, 10, 12), lambda n: 0.05 / n),
+                     (4, 6, 8), lambda n: 0.05 / n),
           ]),
     Scene("oscillatingPlate", "Oscillating plate (Gray et al. 2001), the"
           " tutorial's 3 periods",
           "|period / plate theory - 1|", plate_error, None, [
               Method("TLSPH", "tutorials/isphTlsphFoam/oscillatingPlate",
-                     "-dx", (0.002, 0.001, 0.0005)),
+                     "-dx", (0.002, 0.001)),
+              Method("NOSB-PD", "tutorials/isphTlsphFoam/oscillatingPlate",
+                     "-dx", (0.002, 0.001), args=["-model", "nosbPd"]),
           ]),
     Scene("clampedBeam", "Clamped beam under a tip load (static)",
           "|tip deflection / beam theory - 1|", beam_error, None, [
               Method("TLSPH", "tutorials/isphTlsphFoam/clampedBeam", "-n",
                      (5, 7, 11, 17), lambda n: 0.01 / n),
+              Method("NOSB-PD", "tutorials/isphTlsphFoam/clampedBeam", "-n",
+                     (5, 7, 11), lambda n: 0.01 / n,
+                     ["-model", "nosbPd"]),
           ]),
 ]
 
@@ -224,14 +289,15 @@ def build_digest():
 
 
 def run_case(scene, method, value, work, threads, build):
-    """One run, made now or reused: (error, cost, note)"""
+    """One run, made now or reused: (error, cost, note, reported)"""
     tutorial = os.path.join(PROJECT, method.tutorial)
     case = os.path.join(work, scene.name, slug(method.name),
                         "%s%g" % (method.flag.lstrip("-"), value))
-    args = [method.flag, "%g" % value]
+    args = [method.flag, "%g" % value] + method.args
     h = hashlib.sha256()
     digest_tree(h, tutorial)
-    h.update(repr((args, scene.end, threads, build)).encode())
+    h.update(repr((args, scene.end, sorted(scene.monitors.items()), threads,
+                   build)).encode())
     key = h.hexdigest()
     stamp = os.path.join(case, "inputs.sha256")
     reuse = (os.path.isfile(stamp) and open(stamp).read().strip() == key)
@@ -242,6 +308,17 @@ def run_case(scene, method, value, work, threads, build):
         shutil.copytree(tutorial, case, ignore=shutil.ignore_patterns(
             "[0-9]*", "postProcessing", "log.*", "*.foam", "processor*"))
         subprocess.run(["./Allclean"], cwd=case, capture_output=True)
+        if scene.monitors and "monitors" not in read_dictionary(
+                case, "constant/particleProperties"):
+            subprocess.run(["foamDictionary", "constant/particleProperties",
+                            "-entry", "monitors", "-add", "{}"], cwd=case,
+                           capture_output=True, check=True)
+        for name, text in scene.monitors.items():
+            for action in ("-add", "-set"):
+                subprocess.run(["foamDictionary",
+                                "constant/particleProperties", "-entry",
+                                "monitors/" + name, action, text], cwd=case,
+                               capture_output=True, check=True)
         if scene.end is not None:
             subprocess.run(["foamDictionary", "system/controlDict", "-entry",
                             "endTime", "-set", "%g" % scene.end], cwd=case,
@@ -259,18 +336,24 @@ def run_case(scene, method, value, work, threads, build):
     try:
         cost = run_cost(case)
     except Exception as e:      # no run-cost file: the solver never ran
-        return math.nan, None, "no run: %s" % e
+        return math.nan, None, "no run: %s" % e, ""
     if not cost["completed"]:
         return math.nan, None, "the solver stopped at %g s" \
-            % cost["time"]
+            % cost["time"], ""
     if not reuse:
         with open(stamp, "w") as f:
             f.write(key + "\n")
+    reported = ""
+    if scene.reported is not None:
+        try:
+            reported = scene.reported[1](case)
+        except Exception as e:
+            reported = "none: %s" % e
     try:
         error = scene.error(case, tutorial)
     except Exception as e:
-        return math.nan, cost, "%s; no error: %s" % (note, e)
-    return error, cost, note
+        return math.nan, cost, "%s; no error: %s" % (note, e), reported
+    return error, cost, note, reported
 
 
 def order(points):
@@ -346,15 +429,20 @@ def report(selected, results, quick, threads, path):
                 lines += ["**Only %s runs this scene so far: an error of"
                           " %.3g costs %.0f s (%s).**"
                           % (name, X, w, label(m, v)), ""]
+        extra = scene.reported is not None
         lines += ["| method | resolution | error | observed order | wall"
                   " time | particles | steps | largest parts of the wall"
-                  " time | run |", "|---|---|---|---|---|---|---|---|---|"]
+                  " time | run |%s" % (" %s (reported) |" % scene.reported[0]
+                                       if extra else ""),
+                  "|---|---|---|---|---|---|---|---|---|%s"
+                  % ("---|" if extra else "")]
         for method in {id(r.method): r.method for r in rows}.values():
             own = [r for r in rows if r.method is method]
             p = [math.nan] + order([(method.spacing(r.value), r.error)
                                     for r in own])
             for k, r in enumerate(own):
                 v, e, cost, note = r.value, r.error, r.cost, r.note
+                more = " %s |" % r.reported if extra else ""
                 if cost is None or not math.isfinite(e):
                     failed += 1
                 lines.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s |"
@@ -364,10 +452,26 @@ def report(selected, results, quick, threads, path):
                                 "%.1f s" % cost["wall"] if cost else "",
                                 cost["particles"] if cost else "",
                                 cost["steps"] if cost else "",
-                                shares(cost) if cost else "", note))
+                                shares(cost) if cost else "", note) + more)
         lines.append("")
+        if extra:
+            try:
+                lines += [scene.reported[2]() + ".", ""]
+            except Exception as e:
+                lines += ["(the experiment beside it: %s)" % e, ""]
+    lines += ["## What an effect costs a scene that does not name it", "",
+              "The shares above are of the effects a scene names; one it"
+              " does not name is never constructed. Measured by"
+              " `benchmarks/unusedEffect/Allrun` (its result.md, copied"
+              " here):", ""]
+    unused = os.path.join(PROJECT, "benchmarks", "unusedEffect",
+                          "result.md")
+    if os.path.isfile(unused):
+        lines += [line for line in open(unused).read().splitlines()[1:]]
+    else:
+        lines += ["Not measured yet.", ""]
     with open(path, "w") as f:
-        f.write("\n".join(lines))
+        f.write("\n".join(lines) + "\n")
     return failed
 
 
@@ -446,13 +550,13 @@ def main(argv):
                 continue
             ladder = method.ladder[:2] if quick else method.ladder
             for value in ladder:
-                error, cost, note = run_case(scene, method, value, work,
-                                             threads, build)
+                error, cost, note, reported = run_case(
+                    scene, method, value, work, threads, build)
                 print("%s, %s, %s: error %s, %s (%s)"
                       % (scene.name, method.name, label(method, value),
                          "%.4g" % error, "%.1f s" % cost["wall"] if cost
                          else "no cost", note), flush=True)
-                rows.append(Run(method, value, error, cost, note))
+                rows.append(Run(method, value, error, cost, note, reported))
         results[scene.name] = rows
         os.makedirs(out, exist_ok=True)
         plot(scene, rows, os.path.join(

@@ -136,7 +136,10 @@ def velocity_noise(case, body, dx):
 def written_times_checks(case, series, fluid, solid, dx, visit=None):
     """[(what, met)] over the written times of series (times(case)): the
     fluid and the solid keep their particles; no fluid particle closer
-    than dx/4 to a solid particle (inside the solid). visit(value, name,
+    than dx/4 to a solid particle (inside the solid: a tutorial's own,
+    stricter check; the stability suite, tests/stability, bounds the
+    depth behind the solid's face by 0.5 dx, the criterion every method
+    is held to there). visit(value, name,
     fluid_positions), when given, is called at each time read (a scene's
     own checks on the same pass)"""
     n0 = {b: len(read_positions(case, series[0][1], b))

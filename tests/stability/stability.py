@@ -136,7 +136,7 @@ CASES = [
     ]),
     Case("sloshingTank", "sloshing tank at resonance (6 s)", [
         Method("ULPH", "tutorials/ulphPdFoam/sloshingTank", ["-dx", "0.02"],
-               frame="tank"),
+               coarse_end=3, frame="tank"),
     ]),
 ]
 

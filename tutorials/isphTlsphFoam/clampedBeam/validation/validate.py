@@ -95,7 +95,8 @@ def scheme(case):
     """'faces, taylor': F of order 2, clamp and load on their faces, the
     strain energy integrated with its gradient (the default); 'faces': the
     same with the midpoint rule (Allrun -midpoint); 'paper': eq. 36,
-    clamped particles held, load on the end column, midpoint rule"""
+    clamped particles held, load on the end column, midpoint rule; a
+    solid model other than tlsph (Allrun -model nosbPd) leads the name"""
     def optional(key):
         return dictionary_entry(case, "bodies/beam/" + key, default=None)
     order = optional("gradientOrder") or "1"
@@ -112,6 +113,8 @@ def scheme(case):
     if optional("integrator") == "implicit":
         name += ", implicit dt %g" % float(dictionary_entry(
             case, "deltaT", "system/controlDict"))
+    if optional("model") != "tlsph":
+        name = "%s, %s" % (optional("model"), name)
     return name
 
 

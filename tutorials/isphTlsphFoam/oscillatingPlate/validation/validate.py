@@ -192,7 +192,8 @@ def scheme(case):
     """'face clamp' (the tutorial's): eq. 36, the clamped particles mirror
     the plate across x = 0; 'paper': eq. 36, the clamped particles held
     (Allrun -clamp held); 'order 2': F of order 2 (Allrun -order 2), with
-    ', face clamp' when the clamp is on its face"""
+    ', face clamp' when the clamp is on its face; a solid model other than
+    tlsph (Allrun -model nosbPd) leads the name"""
     order = entry(case, "bodies/plate/gradientOrder", default="1")
     clamp = entry(case, "bodies/plate/constraints/clamp/face/point",
                   default=None) is not None
@@ -200,6 +201,9 @@ def scheme(case):
         name = "face clamp" if clamp else "paper"
     else:
         name = "order %s%s" % (order, ", face clamp" if clamp else "")
+    model = entry(case, "bodies/plate/model")
+    if model != "tlsph":
+        name = "%s, %s" % (model, name)
     return name + implicit(case)
 
 
