@@ -20,6 +20,12 @@ Description
         interior (0.7 % measured; R the rim particles' mean radius: the
         Dirichlet condition sits on the surface particles, not half a
         spacing beyond them);
+      - a wall particle is wet or dry per pair (wallWetting pair): dry
+        exactly where the pressure of the pair's Neumann condition,
+        p_i + rho (g - a_s) . x_is, is negative (a surface particle sees
+        the wall beside and below it, not above), the wall's acceleration
+        in the head, and per wall particle by its interpolated pressure
+        without the pair pressures;
       - particle shifting's R_i vanishes (1e-12 of a spacing) at interior
         lattice particles and points away from a neighbour a particle was
         moved towards.
@@ -469,4 +475,43 @@ TEST(isphEquations, wallContactHoldsSurfaceParticlesApproachingAWall)
     {
         EXPECT_EQ(U[k], U0[k]) << "component " << k;
     }
+}
+
+
+TEST(isphEquations, wallPairDryAboveTheWatersLevel)
+{
+    const double rho = 1000, g = 9.81, dx = 0.002;
+    // Fluid particles: a surface particle (p = 0) and one two spacings
+    // deep (p = 2 rho g dx)
+    const std::vector<double> p{0, 2*rho*g*dx};
+    const std::vector<double> pWall{1, -1};
+    sourceData wall{false, nullptr, nullptr, pWall.data(), nullptr, nullptr};
+    wall.pPair = p.data();
+    wall.rho = rho;
+    wall.g[1] = -g;
+    const sourceData fluid{true, nullptr, nullptr, nullptr, nullptr, nullptr};
+    typedef vectorD<2> v;
+
+    // Surface particle: the wall below and beside is wet, above dry
+    EXPECT_FALSE(dry<2>(wall, 0, 0, v(0, -dx)));
+    EXPECT_FALSE(dry<2>(wall, 0, 0, v(dx, 0)));
+    EXPECT_TRUE(dry<2>(wall, 0, 0, v(dx, 0.1*dx)));
+    EXPECT_TRUE(dry<2>(wall, 0, 0, v(0, dx)));
+
+    // Two spacings deep: wet up to the water's level, dry above it
+    EXPECT_FALSE(dry<2>(wall, 1, 1, v(dx, 1.9*dx)));
+    EXPECT_TRUE(dry<2>(wall, 1, 1, v(dx, 2.1*dx)));
+
+    // A wall falling with g: no head, every pair of p >= 0 wet
+    const std::vector<double> a{0, -g, 0, -g};
+    wall.a = a.data();
+    EXPECT_FALSE(dry<2>(wall, 0, 0, v(0, 5*dx)));
+    wall.a = nullptr;
+
+    // The fluid is never dry; without pair pressures the wall particle's
+    // interpolated pressure decides
+    EXPECT_FALSE(dry<2>(fluid, 0, 0, v(0, dx)));
+    wall.pPair = nullptr;
+    EXPECT_FALSE(dry<2>(wall, 0, 0, v(0, dx)));
+    EXPECT_TRUE(dry<2>(wall, 1, 0, v(0, -dx)));
 }

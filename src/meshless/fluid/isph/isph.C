@@ -45,6 +45,14 @@ Foam::meshless::bodyModels::isph::wallPressureNames
 });
 
 
+const Foam::Enum<Foam::meshless::bodyModels::isph::wallWettingType>
+Foam::meshless::bodyModels::isph::wallWettingNames
+({
+    { wallWettingType::interpolated, "interpolated" },
+    { wallWettingType::pair, "pair" },
+});
+
+
 namespace
 {
     //- The free-surface range (s0 s1) of div r: 0 < s0 < s1 <= dim
@@ -105,6 +113,14 @@ Foam::meshless::bodyModels::isph::isph
         )
     ),
     wallUnknowns_(wallPressure_ == wallPressureType::implicit),
+    wetPerPair_
+    (
+        readEnumOrDefault
+        (
+            dict, "wallWetting", wallWettingNames,
+            wallWettingType::interpolated
+        ) == wallWettingType::pair
+    ),
     densityRelax_
     (
         readNonNegativeOrDefault(dict, "densityInvariantRelaxation", 0)
@@ -137,6 +153,7 @@ Foam::meshless::bodyModels::isph::isph
     gradPsi_(body.particles().addScratchField("gradPsi", particleField::kind::vector)),
     gradU_(body.particles().addScratchField("gradU", particleField::kind::tensor)),
     densityRatio_(body.particles().addScratchField("densityRatio", particleField::kind::scalar)),
+    pStart_(body.particles().addScratchField("pStart", particleField::kind::scalar)),
     mu_(0),
     viscosityEffect_(nullptr),
     shifting_(nullptr),
@@ -167,6 +184,12 @@ Foam::meshless::bodyModels::isph::isph
             << " matrix, which pressureSolver " << solver_->type()
             << " cannot solve: expected solver BiCGStab or BoomerAMG (or"
             << " wallPressure pairwise)" << exit(FatalIOError);
+    }
+    if (wetPerPair_ && wallUnknowns_)
+    {
+        FatalIOErrorInFunction(dict)
+            << "wallWetting pair takes the pairwise wall pressure:"
+            << " expected wallPressure pairwise" << exit(FatalIOError);
     }
     if (wallUnknowns_ && consistent_)
     {
@@ -221,6 +244,12 @@ void Foam::meshless::bodyModels::isph::setSources()
         {
             false, g.U(), g.accelerations(), g.p(), g.normals(), nullptr
         };
+        if (wetPerPair_)
+        {
+            src_[k + 1].pPair = pStart_.data();
+            src_[k + 1].rho = rho0_;
+            for (label d = 0; d < 3; ++d) src_[k + 1].g[d] = g_[d];
+        }
         viscSrc_[k + 1] = riemannEquations::sourceData
         {
             false, nullptr, nullptr, g.U(), g.accelerations(), g.normals(),
@@ -665,7 +694,15 @@ void Foam::meshless::bodyModels::isph::advance
     interpolateBoundaries();
     if (p_.maxMagnitude() == 0)
     {
-        for (size_t k = 1; k < src_.size(); ++k) src_[k].pWall = nullptr;
+        for (size_t k = 1; k < src_.size(); ++k)
+        {
+            src_[k].pWall = nullptr;
+            src_[k].pPair = nullptr;
+        }
+    }
+    if (wetPerPair_)
+    {
+        std::copy(p_.data(), p_.data() + p_.size(), pStart_.data());
     }
 
     // With the walls as unknowns every wall particle takes part, with the
