@@ -42,6 +42,7 @@ Foam::meshless::bodyModels::isph::wallPressureNames
 ({
     { wallPressureType::pairwise, "pairwise" },
     { wallPressureType::implicit, "implicit" },
+    { wallPressureType::solved, "solved" },
 });
 
 
@@ -50,6 +51,7 @@ Foam::meshless::bodyModels::isph::wallWettingNames
 ({
     { wallWettingType::interpolated, "interpolated" },
     { wallWettingType::pair, "pair" },
+    { wallWettingType::all, "all" },
 });
 
 
@@ -112,15 +114,19 @@ Foam::meshless::bodyModels::isph::isph
             wallPressureType::pairwise
         )
     ),
-    wallUnknowns_(wallPressure_ == wallPressureType::implicit),
-    wetPerPair_
+    wallUnknowns_(wallPressure_ != wallPressureType::pairwise),
+    wallRows_(wallPressure_ == wallPressureType::solved),
+    wallGradient_(dict.getOrDefault<bool>("wallGradient", true)),
+    wallWallPairs_(dict.getOrDefault<bool>("wallWallPairs", true)),
+    wetting_
     (
         readEnumOrDefault
         (
             dict, "wallWetting", wallWettingNames,
             wallWettingType::interpolated
-        ) == wallWettingType::pair
+        )
     ),
+    wetPerPair_(wetting_ == wallWettingType::pair),
     densityRelax_
     (
         readNonNegativeOrDefault(dict, "densityInvariantRelaxation", 0)
@@ -177,26 +183,34 @@ Foam::meshless::bodyModels::isph::isph
             << " solve: expected solver BiCGStab or BoomerAMG (or laplacian"
             << " symmetric)" << exit(FatalIOError);
     }
+    const word wallName = wallPressureNames[wallPressure_];
     if (wallUnknowns_ && solver_->needsSymmetric())
     {
         FatalIOErrorInFunction(dict)
-            << "wallPressure implicit gives a non-symmetric pressure"
-            << " matrix, which pressureSolver " << solver_->type()
+            << "wallPressure " << wallName << " gives a non-symmetric"
+            << " pressure matrix, which pressureSolver " << solver_->type()
             << " cannot solve: expected solver BiCGStab or BoomerAMG (or"
             << " wallPressure pairwise)" << exit(FatalIOError);
     }
-    if (wetPerPair_ && wallUnknowns_)
+    if (wetPerPair_ && wallPressure_ == wallPressureType::implicit)
     {
         FatalIOErrorInFunction(dict)
-            << "wallWetting pair takes the pairwise wall pressure:"
-            << " expected wallPressure pairwise" << exit(FatalIOError);
+            << "wallWetting pair takes the pairwise or solved wall"
+            << " pressure: expected wallPressure pairwise or solved"
+            << exit(FatalIOError);
+    }
+    if (wetting_ == wallWettingType::all && !wallRows_)
+    {
+        FatalIOErrorInFunction(dict)
+            << "wallWetting all takes the solved wall pressure: expected"
+            << " wallPressure solved" << exit(FatalIOError);
     }
     if (wallUnknowns_ && consistent_)
     {
         FatalIOErrorInFunction(dict)
-            << "wallPressure implicit takes the symmetric Laplacian"
-            << " (its defect correction): expected laplacian symmetric"
-            << exit(FatalIOError);
+            << "wallPressure " << wallName << " takes the symmetric"
+            << " Laplacian (its defect correction): expected laplacian"
+            << " symmetric" << exit(FatalIOError);
     }
 }
 
@@ -213,20 +227,44 @@ void Foam::meshless::bodyModels::isph::connectModel(particleScene&)
     shifting_ = findEffect<effects::particleShifting>(body_);
     own_->cache(neighbourRelation::kernelGradient);
     if (densityRelax_ > 0) own_->cache(neighbourRelation::kernelValue);
-    for (boundary& b : boundaries_)
+    for (boundary& b : boundaries_) boundaryAdded(b);
+}
+
+
+void Foam::meshless::bodyModels::isph::boundaryAdded(boundary& b)
+{
+    b.toGhosts->cache(neighbourRelation::kernelGradient);
+    if (wallUnknowns_)
     {
-        b.toGhosts->cache(neighbourRelation::kernelGradient);
-        if (wallUnknowns_)
-        {
-            b.fromGhosts->cache(neighbourRelation::kernelGradient);
-        }
+        b.fromGhosts->cache(neighbourRelation::kernelGradient);
     }
+    if (!wallRows_) return;
+
+    // A ghostWall's particles with themselves for the wall rows: the
+    // wall's own relation (rigid: its pairs those of the start), its
+    // geometry at the current positions each step (moving walls); a
+    // coupled structure's surface takes rows over the fluid only
+    neighbourRelation* own = nullptr;
+    if (b.wall)
+    {
+        const particleBody& gb = b.ghosts->ghostBody();
+        own = &relations_->inner
+        (
+            gb.name() + " (ghosts)", gb.particles().positions(),
+            body_.kernel(), 0, false,
+            neighbourRelation::separation | neighbourRelation::kernelGradient
+        );
+        relations_->update(*own);
+        own->updateGeometry();
+    }
+    wallOwn_.push_back(own);
 }
 
 
 void Foam::meshless::bodyModels::isph::setSources()
 {
     src_.resize(1 + boundaries_.size());
+    surfaceSrc_.resize(1 + boundaries_.size());
     viscSrc_.resize(1 + boundaries_.size());
     src_[0] = isphEquations::sourceData
     {
@@ -250,6 +288,7 @@ void Foam::meshless::bodyModels::isph::setSources()
             src_[k + 1].rho = rho0_;
             for (label d = 0; d < 3; ++d) src_[k + 1].g[d] = g_[d];
         }
+        if (wetting_ == wallWettingType::all) src_[k + 1].pWall = nullptr;
         viscSrc_[k + 1] = riemannEquations::sourceData
         {
             false, nullptr, nullptr, g.U(), g.accelerations(), g.normals(),
@@ -420,9 +459,9 @@ void Foam::meshless::bodyModels::isph::advanceDim
             n, ctx_.sources,
             freeSurfaceTerm<Dim>
             {
-                src_.data(), V_.data(), surface_.first(), surface_.second(),
-                divr_.data(),
-                alpha_.data(), moment_.data()
+                surfaceSrc_.data(), V_.data(), surface_.first(),
+                surface_.second(), divr_.data(), alpha_.data(),
+                moment_.data(), wallRows_
             }
         );
         gather
@@ -506,12 +545,29 @@ void Foam::meshless::bodyModels::isph::advanceDim
                         b.ghosts->accelerations(), wallOffset_[k]
                     }
                 );
+                if (wallRows_)
+                {
+                    // The wall rows' source: div u* at the wall particles
+                    std::vector<double>& dw = wallDiv_[k];
+                    dw.resize(b.fromGhosts->size());
+                    wallDivergence<Dim>
+                    (
+                        *b.fromGhosts, Us, V_.data(), b.ghosts->U(),
+                        b.ghosts->normals(), dt*g, dw.data()
+                    );
+                    if (wallOwn_[k] && b.ghosts->moving())
+                    {
+                        wallOwn_[k]->updateGeometry();
+                    }
+                    blocks.back().div = dw.data();
+                    if (wallWallPairs_) blocks.back().own = wallOwn_[k];
+                }
             }
             std::copy(rhs_.data(), rhs_.data() + n, bAll_.begin());
             isphEquations::assemblePoissonWalls<Dim>
             (
                 *own_, blocks, V_.data(), alpha_.data(), divr_.data(),
-                divU_.data(), rho0_, dt, g, bAll_.data(), A_
+                divU_.data(), rho0_, dt, g, bAll_.data(), A_, wallGradient_
             );
             std::copy(bAll_.begin(), bAll_.begin() + n, rhs_.data());
         }
@@ -728,12 +784,21 @@ void Foam::meshless::bodyModels::isph::advance
             }
         }
         bAll_.resize(N);
+        wallDiv_.resize(boundaries_.size());
+        for (size_t k = 0; k < boundaries_.size(); ++k)
+        {
+            src_[k + 1].pSolved = pAll_.data() + wallOffset_[k];
+        }
+        // Solved: the wetting rule for the free surface's div r only,
+        // every wall particle in every other term
+        if (wallRows_) surfaceSrc_ = src_;
         for (size_t k = 0; k < boundaries_.size(); ++k)
         {
             src_[k + 1].pWall = nullptr;
-            src_[k + 1].pSolved = pAll_.data() + wallOffset_[k];
+            src_[k + 1].pPair = nullptr;
         }
     }
+    if (!wallRows_) surfaceSrc_ = src_;
     dispatchDim(body_.dim(), [&](auto d) { advanceDim<d>(t, dt, costs); });
 }
 
