@@ -31,6 +31,13 @@ Description
         and wall row whose neighbours are unknowns (1e-10), the deepest
         layers are p = 0 rows, and water arriving at the floor gives
         its first layer div u* < 0 and a solved pressure above the head;
+      - the projection's gradient without the correction (B = I) is
+        within 2 % of the exact one inside a lattice block; the sum form
+        adds nothing at interior lattice particles and pushes an edge
+        particle of a uniform pressure off its neighbours;
+      - with ghost air (freeSurfacePressure ghostAir) still water three
+        rows deep on a floor gives its top row (p = 0 with the Dirichlet
+        condition) a positive pressure below rho g dx, rising with depth;
       - particle shifting's R_i vanishes (1e-12 of a spacing) at interior
         lattice particles and points away from a neighbour a particle was
         moved towards.
@@ -698,4 +705,187 @@ TEST(isphEquations, solvedWallRowsHoldHydrostaticsAndRiseUnderAnArrival)
         if (pArr[n + s] > p[n + s] + rho*0.5*dx/dt*0.1) ++rose;
     }
     EXPECT_EQ(rose, nx) << "every first-layer particle";
+}
+
+
+TEST(isphEquations, plainAndSumFormGradients)
+{
+    // projectionGradient (isph.H): the flagged particles take the
+    // gradient without the correction, B = I; on a lattice block it is
+    // within 2 % of the (exact) corrected one at the interior particles
+    // for a linear field. The sum form adds 2 p_i sum_j G_ij V_j x_ij:
+    // zero at the interior particles (a full, symmetric support), and at
+    // an edge particle of a uniform pressure it points into the block
+    // (-grad p pushes the particle off its neighbours)
+    const double dx = 0.01;
+    const label side = 12;
+    cloud<2> c(meshlessTest::latticePoints(2, side, dx), dx);
+    const std::vector<double> B = c.B();
+    std::vector<double> p(c.n), one(c.n, 1.0);
+    for (label i = 0; i < c.n; ++i) p[i] = 1 + 2*c.x(i, 0) - 3*c.x(i, 1);
+    const sourceData src{true, nullptr, nullptr, nullptr, nullptr};
+    const vectorD<2> g = vectorD<2>::Zero();
+    const std::vector<char> all(c.n, 1);
+    std::vector<double> gc(2*c.n), gPlain(2*c.n), gSum(2*c.n);
+    gather(c.n, c.sources, pressureGradientTerm<2>{&src, p.data(), B.data(), g, 1000, gc.data()});
+    gather(c.n, c.sources, pressureGradientTerm<2>{&src, p.data(), B.data(), g, 1000, gPlain.data(), all.data()});
+    label interior = 0;
+    for (label i = 0; i < c.n; ++i)
+    {
+        const double x = c.x(i, 0)/dx, y = c.x(i, 1)/dx;
+        if (x < 2.5 || y < 2.5 || x > side - 3.5 || y > side - 3.5) continue;
+        ++interior;
+        EXPECT_NEAR(gc[2*i], 2, 1e-10);
+        EXPECT_NEAR(gc[2*i + 1], -3, 1e-10);
+        EXPECT_NEAR(gPlain[2*i], 2, 0.04);
+        EXPECT_NEAR(gPlain[2*i + 1], -3, 0.06);
+    }
+    EXPECT_GT(interior, 20);
+
+    gather(c.n, c.sources, pressureGradientTerm<2>{&src, one.data(), B.data(), g, 1000, gSum.data(), all.data(), 2});
+    label edges = 0;
+    for (label i = 0; i < c.n; ++i)
+    {
+        const double x = c.x(i, 0)/dx, y = c.x(i, 1)/dx;
+        if (x > 2.5 && y > 2.5 && x < side - 3.5 && y < side - 3.5)
+        {
+            EXPECT_NEAR(gSum[2*i], 0, 1e-8);
+            EXPECT_NEAR(gSum[2*i + 1], 0, 1e-8);
+        }
+        if (x < 0.1 && y > 2.5 && y < side - 3.5)
+        {
+            ++edges;
+            EXPECT_GT(gSum[2*i], 10) << "into the block";
+            EXPECT_NEAR(gSum[2*i + 1], 0, 1e-8);
+        }
+    }
+    EXPECT_GT(edges, 3);
+}
+
+
+TEST(isphEquations, ghostAirGivesAThinLayerAPressure)
+{
+    // Still water three rows deep on a floor of 4 layers (wallPressure
+    // solved): with the Dirichlet condition on the surface particles the
+    // top row is p = 0; with ghost air (freeSurfacePressure ghostAir:
+    // D0 > 0) the top row is an unknown whose row has the diagonal
+    // max(D_i, D0) and the source -rho V div u*/dt only, and the solve
+    // gives every row a positive pressure that grows with depth
+    const double dx = 0.01, rho = 1000, dt = 1e-3, g = 9.81;
+    const label nx = 20, ny = 3;
+    std::vector<double> fluid, wall, normal;
+    for (label i = 0; i < nx; ++i)
+    {
+        for (label k = 0; k < ny; ++k)
+        {
+            fluid.push_back((i + 0.5)*dx);
+            fluid.push_back((k + 0.5)*dx);
+        }
+        for (label k = 0; k < 4; ++k)
+        {
+            wall.push_back((i + 0.5)*dx);
+            wall.push_back(-(k + 0.5)*dx);
+            normal.push_back(0);
+            normal.push_back(1);
+        }
+    }
+    meshlessTest::pairFixture fx(2);
+    fx.addBody(fluid, dx*dx);
+    fx.addBody(wall, dx*dx);
+    autoPtr<smoothingKernel> W(meshlessTest::kernel(2, dx, spline));
+    const neighbourRelation& ff = fx.relate(0, 0, *W);
+    const neighbourRelation& fw = fx.relate(0, 1, *W);
+    const neighbourRelation& wf = fx.relate(1, 0, *W);
+    const neighbourRelation& ww = fx.relate(1, 1, *W);
+    const std::vector<pairSource> sources = fx.sources(0);
+    const label n = fx.size(0), nw = fx.size(1);
+
+    std::vector<double> Uf(2*n, 0.0), Uw(2*nw, 0.0);
+    for (label i = 0; i < n; ++i) Uf[2*i + 1] = -g*dt;
+    const sourceData src[2] =
+    {
+        {true, Uf.data(), nullptr, nullptr, nullptr, nullptr},
+        {false, Uw.data(), nullptr, nullptr, normal.data(), nullptr}
+    };
+    std::vector<double> V(n, dx*dx), Vw(nw, dx*dx), divr(n), alpha(n);
+    std::vector<double> m(2*n), divU(n, 0.0), divW(nw);
+    gather
+    (
+        n, sources,
+        freeSurfaceTerm<2>
+        {
+            src, V.data(), 1.4, 1.6, divr.data(), alpha.data(), m.data()
+        }
+    );
+    const vectorD<2> gv(0, -g);
+    wallDivergence<2>
+    (
+        wf, Uf.data(), V.data(), Uw.data(), normal.data(), dt*gv,
+        divW.data()
+    );
+    std::vector<wallBlock> blocks
+    {
+        wallBlock{&fw, &wf, Vw.data(), nullptr, n, divW.data(), &ww}
+    };
+
+    // D0 of the full lattice
+    double D0 = 0;
+    for (label a = -3; a <= 3; ++a)
+    {
+        for (label b = -3; b <= 3; ++b)
+        {
+            const double r = dx*std::sqrt(double(a*a + b*b));
+            if (r > 0 && r < W->radius())
+            {
+                D0 += gradientFactor(r, W->dWdr(r));
+            }
+        }
+    }
+    D0 *= 2*std::pow(dx, 4);
+
+    autoPtr<linearSolver> solver
+    (
+        linearSolver::New
+        (
+            dictionary(IStringStream("solver BiCGStab; tolerance 1e-12;"
+                " maxIter 2000;")())
+        )
+    );
+    auto solve = [&](const double d0)
+    {
+        std::vector<double> R(n + nw, 0.0), p(n + nw, 0.0);
+        for (label i = 0; i < n; ++i) R[i] = -rho*(m[2*i + 1]*(-g));
+        sparseMatrix A;
+        assemblePoissonWalls<2>
+        (
+            ff, blocks, V.data(), alpha.data(), divr.data(), divU.data(),
+            rho, dt, gv, R.data(), A, true, d0
+        );
+        EXPECT_TRUE(solver->solve(A, R.data(), p.data()).converged);
+        return p;
+    };
+    const std::vector<double> pd = solve(0), pg = solve(D0);
+
+    // The middle column's rows, bottom to top
+    label tops = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        const double x = fx.x(0)(i, 0)/dx;
+        if (x < 4 || x > nx - 4) continue;
+        const label k = label(fx.x(0)(i, 1)/dx);
+        if (k == ny - 1)
+        {
+            ++tops;
+            EXPECT_EQ(alpha[i], 0);
+            EXPECT_EQ(pd[i], 0) << "Dirichlet on the surface particle";
+            EXPECT_GT(pg[i], 0.1*rho*g*dx) << "ghost air";
+            EXPECT_LT(pg[i], rho*g*dx);
+        }
+        else
+        {
+            // The row above it (same column: i + 1) holds less
+            EXPECT_GT(pg[i], pg[i + 1]);
+        }
+    }
+    EXPECT_GT(tops, 5);
 }

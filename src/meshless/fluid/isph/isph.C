@@ -55,6 +55,40 @@ Foam::meshless::bodyModels::isph::wallWettingNames
 });
 
 
+const Foam::Enum
+<
+    Foam::meshless::bodyModels::isph::projectionGradientType
+>
+Foam::meshless::bodyModels::isph::projectionGradientNames
+({
+    { projectionGradientType::corrected, "corrected" },
+    { projectionGradientType::surfaceUncorrected, "surfaceUncorrected" },
+    { projectionGradientType::uncorrected, "uncorrected" },
+    { projectionGradientType::surfaceSum, "surfaceSum" },
+    { projectionGradientType::surfaceGhost, "surfaceGhost" },
+});
+
+
+const Foam::Enum
+<
+    Foam::meshless::bodyModels::isph::freeSurfacePressureType
+>
+Foam::meshless::bodyModels::isph::freeSurfacePressureNames
+({
+    { freeSurfacePressureType::dirichlet, "dirichlet" },
+    { freeSurfacePressureType::ghostAir, "ghostAir" },
+});
+
+
+const Foam::Enum<Foam::meshless::bodyModels::isph::shiftNearWallsType>
+Foam::meshless::bodyModels::isph::shiftNearWallsNames
+({
+    { shiftNearWallsType::normal, "normal" },
+    { shiftNearWallsType::wallTangent, "wallTangent" },
+    { shiftNearWallsType::none, "none" },
+});
+
+
 namespace
 {
     //- The free-surface range (s0 s1) of div r: 0 < s0 < s1 <= dim
@@ -135,6 +169,31 @@ Foam::meshless::bodyModels::isph::isph
     (
         dict.getOrDefault<bool>("densityInvariantCompressionOnly", false)
     ),
+    projectionGradient_
+    (
+        readEnumOrDefault
+        (
+            dict, "projectionGradient", projectionGradientNames,
+            projectionGradientType::corrected
+        )
+    ),
+    ghostAir_
+    (
+        readEnumOrDefault
+        (
+            dict, "freeSurfacePressure", freeSurfacePressureNames,
+            freeSurfacePressureType::dirichlet
+        ) == freeSurfacePressureType::ghostAir
+    ),
+    surfaceDefect_(dict.getOrDefault<bool>("surfaceDefectCorrection", true)),
+    shiftNearWalls_
+    (
+        readEnumOrDefault
+        (
+            dict, "shiftNearWalls", shiftNearWallsNames,
+            shiftNearWallsType::normal
+        )
+    ),
     solver_
     (
         linearSolver::New
@@ -204,6 +263,12 @@ Foam::meshless::bodyModels::isph::isph
         FatalIOErrorInFunction(dict)
             << "wallWetting all takes the solved wall pressure: expected"
             << " wallPressure solved" << exit(FatalIOError);
+    }
+    if (ghostAir_ && !wallUnknowns_)
+    {
+        FatalIOErrorInFunction(dict)
+            << "freeSurfacePressure ghostAir takes the walls as unknowns:"
+            << " expected wallPressure implicit or solved" << exit(FatalIOError);
     }
     if (wallUnknowns_ && consistent_)
     {
@@ -369,12 +434,74 @@ void Foam::meshless::bodyModels::isph::shift
                 const vectorD<Dim> nrm = -gp/gm;
                 dr -= dr.dot(nrm)*nrm;
             }
+            if (shiftNearWalls_ != shiftNearWallsType::normal)
+            {
+                // The nearest wall particle within h (normal into it)
+                double rmin = h;
+                const double* nw = nullptr;
+                for (const boundary& b : boundaries_)
+                {
+                    const neighbourRelation& tw = *b.toGhosts;
+                    const label* o = tw.offsetData();
+                    const label* js = tw.indexData();
+                    const double* rs = tw.r();
+                    const double* ns = b.ghosts->normals();
+                    for (label q = o[i]; q < o[i + 1]; ++q)
+                    {
+                        if (rs[q] < rmin)
+                        {
+                            rmin = rs[q];
+                            nw = ns ? ns + js[q]*Dim : nullptr;
+                        }
+                    }
+                }
+                if (rmin < h)
+                {
+                    if (shiftNearWalls_ == shiftNearWallsType::none)
+                    {
+                        dr = vectorD<Dim>::Zero();
+                    }
+                    else if (nw)
+                    {
+                        const auto nn = cvec<Dim>(nw, 0);
+                        const double into = dr.dot(nn);
+                        if (into > 0) dr -= into*nn;
+                    }
+                }
+            }
         }
 
         if (correctU) vec<Dim>(U, i) += ctens<Dim>(gradU_.data(), i)*dr;
         p[i] += cvec<Dim>(gradP_.data(), i).dot(dr);
         vec<Dim>(x, i) += dr;
     }
+}
+
+
+template<int Dim>
+Foam::scalar Foam::meshless::bodyModels::isph::fullLatticeD() const
+{
+    // D0 = 2 V^2 sum_j G(r_j) over a full lattice of the spacing
+    const smoothingKernel& W = body_.kernel();
+    const scalar dx = body_.spacing();
+    const label K = label(std::ceil(W.radius()/dx));
+    scalar sum = 0;
+    for (label a = -K; a <= K; ++a)
+    {
+        for (label b = -K; b <= K; ++b)
+        {
+            for (label c = (Dim == 3 ? -K : 0); c <= (Dim == 3 ? K : 0); ++c)
+            {
+                const scalar r = dx*std::sqrt(scalar(a*a + b*b + c*c));
+                if (r > 0 && r < W.radius())
+                {
+                    sum += gradientFactor(r, W.dWdr(r));
+                }
+            }
+        }
+    }
+    const scalar V = std::pow(dx, Dim);
+    return 2*V*V*sum;
 }
 
 
@@ -518,14 +645,36 @@ void Foam::meshless::bodyModels::isph::advanceDim
                 }
             );
         }
+        // On or within h of the free surface at x*
+        {
+            nearSurface_.assign(n, 0);
+            const neighbourRelation& rel = *own_;
+            const label* off = rel.offsetData();
+            const label* idx = rel.indexData();
+            const double* r = rel.r();
+            const double* alpha = alpha_.data();
+            char* ns = nearSurface_.data();
+            #pragma omp parallel for schedule(static)
+            for (label i = 0; i < n; ++i)
+            {
+                bool s = alpha[i] < 1;
+                for (label q = off[i]; q < off[i + 1] && !s; ++q)
+                {
+                    s = r[q] < h && alpha[idx[q]] < 1;
+                }
+                ns[i] = s;
+            }
+        }
         if (!consistent_)
         {
             const double* m = moment_.data();
             const double* gp = gradP_.data();
             double* R = rhs_.data();
+            const char* ns = surfaceDefect_ ? nullptr : nearSurface_.data();
             #pragma omp parallel for schedule(static)
             for (label i = 0; i < n; ++i)
             {
+                if (ns && ns[i]) continue;
                 double c = 0;
                 for (int d = 0; d < Dim; ++d) c += m[i*Dim + d]*gp[i*Dim + d];
                 R[i] -= c;
@@ -567,7 +716,8 @@ void Foam::meshless::bodyModels::isph::advanceDim
             isphEquations::assemblePoissonWalls<Dim>
             (
                 *own_, blocks, V_.data(), alpha_.data(), divr_.data(),
-                divU_.data(), rho0_, dt, g, bAll_.data(), A_, wallGradient_
+                divU_.data(), rho0_, dt, g, bAll_.data(), A_, wallGradient_,
+                ghostAir_ ? fullLatticeD<Dim>() : 0
             );
             std::copy(bAll_.begin(), bAll_.begin() + n, rhs_.data());
         }
@@ -640,12 +790,29 @@ void Foam::meshless::bodyModels::isph::advanceDim
     // 3. Projection and positions
     {
         costAccounting::scope timer(costs, projectionCost_);
+        std::vector<char> everywhere;
+        const char* plain = nullptr;
+        if (projectionGradient_ == projectionGradientType::uncorrected)
+        {
+            everywhere.assign(n, 1);
+            plain = everywhere.data();
+        }
+        else if (projectionGradient_ != projectionGradientType::corrected)
+        {
+            plain = nearSurface_.data();
+        }
         gather
         (
             n, ctx_.sources,
             pressureGradientTerm<Dim>
             {
-                src_.data(), p_.data(), B_.data(), g, rho0_, gradP_.data()
+                src_.data(), p_.data(), B_.data(), g, rho0_, gradP_.data(),
+                plain,
+                projectionGradient_ == projectionGradientType::surfaceSum
+              ? 2.0
+              : projectionGradient_ == projectionGradientType::surfaceGhost
+              ? 1.0
+              : 0.0
             }
         );
         const double* gp = gradP_.data();
