@@ -1,12 +1,12 @@
 #!/usr/bin/python3
 """Case test: the ISPH dam break (tutorials/isphTlsphFoam/damBreak) at its
-default H/dx = 28.5 (dx = 2 mm) to 0.17 s, before the impact.
+default H/dx = 28.5 (dx = 2 mm) through the impact to 0.6 s (about 15 s).
 
 - The tutorial's own checks (validate.py --check) pass: the front within
-  0.05 H RMS of the Navier-Stokes front without surface tension (0.0477 H
-  measured), no particle lost or through a wall, the energy's largest
-  rise within 4 % of rho0 g H^3/2 (2.7 %; 1.0 to 2.7 % and a front RMS of
-  0.0433 to 0.0489 H over perturbations of h by 1e-13 of itself).
+  0.05 H RMS of the Navier-Stokes front without surface tension up to
+  T = 2.23 (0.0183 H measured; 0.0147 to 0.0320 H over perturbations of
+  the write times, h and the wall options), no particle lost or through a
+  wall, the energy's largest rise within 4 % of rho0 g H^3/2 (2.0 %).
 - The run cost has the model's parts and the shifting's.
 """
 import os
@@ -31,11 +31,11 @@ def dam_break(t, work):
     run = runs[-1]
     t.check("front within %.4f H < 0.05 H of the Navier-Stokes front"
             % run["rms"], run["rms"] < 0.05)
-    t.check("stable to 0.17 s (validate.py's checks)", run["stable"] == 1,
+    t.check("stable to 0.6 s (validate.py's checks)", run["stable"] == 1,
             out[-1500:])
     parts = run_cost(case)["parts"]
     for part in ("water.isph", "water.pressureSolve",
-                 "water.particleShifting", "water.wallRepulsion"):
+                 "water.particleShifting"):
         t.check("run cost has the part %s" % part,
                 parts.get(part, {}).get("calls", 0) > 0, str(sorted(parts)))
 

@@ -21,8 +21,10 @@ Water 0.1 m deep in a 0.2 m wide 2D tank (dx = 5 mm, fixed ghost walls of
 - the solvers agree: 0.05 s with CG, BiCGStab and BoomerAMG give the same
   pressures within 1e-6 of rho g H;
 - the consistent Laplacian (laplacian consistent, BiCGStab) keeps it still
-  and hydrostatic too; an unknown laplacian is an error naming it, and so
-  is laplacian consistent with CG (a solver for symmetric matrices);
+  and hydrostatic too, and so do the walls as unknowns (wallPressure
+  implicit or solved, BiCGStab); an unknown laplacian is an error naming
+  it, and so is laplacian consistent with CG (a solver for symmetric
+  matrices);
 - a solve that cannot converge (maxIter 1) stops the run with a diagnosis
   naming the solver and its residual; an unknown solver is an error
   naming 'solver'.
@@ -149,13 +151,17 @@ def consistent(t, work):
 
 def options(t, work):
     """The dam break's options (isph.H) keep still water still and
-    hydrostatic: the walls as unknowns (wallPressure implicit, BiCGStab),
+    hydrostatic: the walls as unknowns (wallPressure implicit or solved,
+    BiCGStab),
     the one-sided density-invariance term with the walls' contact
     condition; wallPressure implicit with CG is an error naming both."""
     variants = (
         ("wallImplicit", [("bodies/water/wallPressure", "implicit"),
                           ("bodies/water/pressureSolver/solver",
                            "BiCGStab")]),
+        ("wallSolved", [("bodies/water/wallPressure", "solved"),
+                        ("bodies/water/pressureSolver/solver",
+                         "BiCGStab")]),
         ("densityInvariant", [
             ("bodies/water/densityInvariantRelaxation", 0.05),
             ("bodies/water/densityInvariantCompressionOnly", "yes"),

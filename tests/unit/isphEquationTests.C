@@ -20,6 +20,24 @@ Description
         interior (0.7 % measured; R the rim particles' mean radius: the
         Dirichlet condition sits on the surface particles, not half a
         spacing beyond them);
+      - a wall particle is wet or dry per pair (wallWetting pair): dry
+        exactly where the pressure of the pair's Neumann condition,
+        p_i + rho (g - a_s) . x_is, is negative (a surface particle sees
+        the wall beside and below it, not above), the wall's acceleration
+        in the head, and per wall particle by its interpolated pressure
+        without the pair pressures;
+      - the walls' own Poisson rows (wallPressure solved): over water on
+        a floor of 4 layers the hydrostatic pressure solves every fluid
+        and wall row whose neighbours are unknowns (1e-10), the deepest
+        layers are p = 0 rows, and water arriving at the floor gives
+        its first layer div u* < 0 and a solved pressure above the head;
+      - the projection's gradient without the correction (B = I) is
+        within 2 % of the exact one inside a lattice block; the sum form
+        adds nothing at interior lattice particles and pushes an edge
+        particle of a uniform pressure off its neighbours;
+      - with ghost air (freeSurfacePressure ghostAir) still water three
+        rows deep on a floor gives its top row (p = 0 with the Dirichlet
+        condition) a positive pressure below rho g dx, rising with depth;
       - particle shifting's R_i vanishes (1e-12 of a spacing) at interior
         lattice particles and points away from a neighbour a particle was
         moved towards.
@@ -469,4 +487,405 @@ TEST(isphEquations, wallContactHoldsSurfaceParticlesApproachingAWall)
     {
         EXPECT_EQ(U[k], U0[k]) << "component " << k;
     }
+}
+
+
+TEST(isphEquations, wallPairDryAboveTheWatersLevel)
+{
+    const double rho = 1000, g = 9.81, dx = 0.002;
+    // Fluid particles: a surface particle (p = 0) and one two spacings
+    // deep (p = 2 rho g dx)
+    const std::vector<double> p{0, 2*rho*g*dx};
+    const std::vector<double> pWall{1, -1};
+    sourceData wall{false, nullptr, nullptr, pWall.data(), nullptr, nullptr};
+    wall.pPair = p.data();
+    wall.rho = rho;
+    wall.g[1] = -g;
+    const sourceData fluid{true, nullptr, nullptr, nullptr, nullptr, nullptr};
+    typedef vectorD<2> v;
+
+    // Surface particle: the wall below and beside is wet, above dry
+    EXPECT_FALSE(dry<2>(wall, 0, 0, v(0, -dx)));
+    EXPECT_FALSE(dry<2>(wall, 0, 0, v(dx, 0)));
+    EXPECT_TRUE(dry<2>(wall, 0, 0, v(dx, 0.1*dx)));
+    EXPECT_TRUE(dry<2>(wall, 0, 0, v(0, dx)));
+
+    // Two spacings deep: wet up to the water's level, dry above it
+    EXPECT_FALSE(dry<2>(wall, 1, 1, v(dx, 1.9*dx)));
+    EXPECT_TRUE(dry<2>(wall, 1, 1, v(dx, 2.1*dx)));
+
+    // A wall falling with g: no head, every pair of p >= 0 wet
+    const std::vector<double> a{0, -g, 0, -g};
+    wall.a = a.data();
+    EXPECT_FALSE(dry<2>(wall, 0, 0, v(0, 5*dx)));
+    wall.a = nullptr;
+
+    // The fluid is never dry; without pair pressures the wall particle's
+    // interpolated pressure decides
+    EXPECT_FALSE(dry<2>(fluid, 0, 0, v(0, dx)));
+    wall.pPair = nullptr;
+    EXPECT_FALSE(dry<2>(wall, 0, 0, v(0, dx)));
+    EXPECT_TRUE(dry<2>(wall, 1, 0, v(0, -dx)));
+}
+
+
+TEST(isphEquations, solvedWallRowsHoldHydrostaticsAndRiseUnderAnArrival)
+{
+    // Water 12 rows deep over a floor of 4 layers (wallPressure solved):
+    // with div u* = 0 the hydrostatic pressure p = rho |g| (y_s - y),
+    // walls included, solves every row whose fluid neighbours are all
+    // unknowns (the fluid's with the defect correction m_i . grad p, the
+    // walls' with their known gradient rho g), to round-off; the wall
+    // particles without fluid in their support (the deepest layers) are
+    // p = 0 rows. Water moving down into the floor gives the wall
+    // particles under it div u* < 0 and raises their solved pressure
+    const double dx = 0.01, rho = 1000, dt = 1e-3, g = 9.81;
+    const label nx = 24, ny = 12;
+    std::vector<double> fluid, wall, normal;
+    for (label i = 0; i < nx; ++i)
+    {
+        for (label k = 0; k < ny; ++k)
+        {
+            fluid.push_back((i + 0.5)*dx);
+            fluid.push_back((k + 0.5)*dx);
+        }
+        for (label k = 0; k < 4; ++k)
+        {
+            wall.push_back((i + 0.5)*dx);
+            wall.push_back(-(k + 0.5)*dx);
+            normal.push_back(0);
+            normal.push_back(1);
+        }
+    }
+    meshlessTest::pairFixture fx(2);
+    fx.addBody(fluid, dx*dx);
+    fx.addBody(wall, dx*dx);
+    autoPtr<smoothingKernel> W(meshlessTest::kernel(2, dx, spline));
+    const neighbourRelation& ff = fx.relate(0, 0, *W);
+    const neighbourRelation& fw = fx.relate(0, 1, *W);
+    const neighbourRelation& wf = fx.relate(1, 0, *W);
+    const neighbourRelation& ww = fx.relate(1, 1, *W);
+    const std::vector<pairSource> sources = fx.sources(0);
+    const label n = fx.size(0), nw = fx.size(1);
+
+    std::vector<double> Uf(2*n, 0.0), Uw(2*nw, 0.0);
+    const sourceData src[2] =
+    {
+        {true, Uf.data(), nullptr, nullptr, nullptr, nullptr},
+        {false, Uw.data(), nullptr, nullptr, normal.data(), nullptr}
+    };
+    std::vector<double> V(n, dx*dx), Vw(nw, dx*dx), divr(n), alpha(n);
+    std::vector<double> m(2*n);
+    gather
+    (
+        n, sources,
+        freeSurfaceTerm<2>
+        {
+            src, V.data(), 1.4, 1.6, divr.data(), alpha.data(), m.data()
+        }
+    );
+
+    const vectorD<2> gv(0, -g);
+    const double ys = ny*dx;
+    std::vector<double> p(n + nw), R(n + nw, 0.0), divU(n, 0.0);
+    for (label i = 0; i < n; ++i)
+    {
+        p[i] = rho*g*(ys - fx.x(0)(i, 1));
+        R[i] = -rho*(m[2*i + 1]*(-g));
+    }
+    for (label s = 0; s < nw; ++s) p[n + s] = rho*g*(ys - fx.x(1)(s, 1));
+
+    // u* = dt g of still water: the wall's predicted velocity
+    std::vector<double> divW(nw);
+    for (label i = 0; i < n; ++i) Uf[2*i + 1] = -g*dt;
+    wallDivergence<2>
+    (
+        wf, Uf.data(), V.data(), Uw.data(), normal.data(),
+        dt*gv, divW.data()
+    );
+    for (label s = 0; s < nw; ++s) EXPECT_NEAR(divW[s], 0, 1e-12);
+
+    std::vector<wallBlock> blocks
+    {
+        wallBlock{&fw, &wf, Vw.data(), nullptr, n, divW.data(), &ww}
+    };
+    sparseMatrix A;
+    assemblePoissonWalls<2>
+    (
+        ff, blocks, V.data(), alpha.data(), divr.data(), divU.data(), rho,
+        dt, gv, R.data(), A
+    );
+    ASSERT_TRUE(A.checkDiagonalFirst());
+    EXPECT_EQ(A.n(), n + nw);
+
+    std::vector<double> Ap(n + nw);
+    A.multiply(p.data(), Ap.data());
+    const label* s0 = A.rowStart();
+    const label* col = A.columns();
+    const double* val = A.values();
+    label fluidRows = 0, wallRows = 0, known = 0;
+    double worst = 0, scale = 0;
+    for (label r = 0; r < n + nw; ++r)
+    {
+        if (r < n && !(alpha[r] > 0)) continue;
+        bool full = true;
+        double D = 0;
+        for (label q = s0[r] + 1; q < s0[r + 1]; ++q)
+        {
+            const label c = col[q];
+            if (c < n && !(alpha[c] > 0)) full = false;
+            D += std::abs(val[q]);
+        }
+        if (r >= n && D == 0)
+        {
+            // No fluid in the support: p = 0
+            ++known;
+            EXPECT_EQ(val[s0[r]], 1);
+            EXPECT_EQ(R[r], 0);
+            continue;
+        }
+        if (!full) continue;
+        (r < n ? fluidRows : wallRows) += 1;
+        worst = std::max(worst, std::abs(Ap[r] - R[r]));
+        scale = std::max(scale, D*std::abs(p[r]));
+    }
+    EXPECT_GT(fluidRows, 100);
+    EXPECT_GT(wallRows, nx) << "of the two layers the water reaches";
+    EXPECT_EQ(known, 2*nx);
+    EXPECT_LT(worst, 1e-10*scale);
+
+    // Without the walls' known gradient (wallGradient no) the first layer
+    // misses the head between it and the water
+    std::vector<double> R0(n + nw, 0.0);
+    for (label i = 0; i < n; ++i) R0[i] = -rho*(m[2*i + 1]*(-g));
+    sparseMatrix A0;
+    assemblePoissonWalls<2>
+    (
+        ff, blocks, V.data(), alpha.data(), divr.data(), divU.data(), rho,
+        dt, gv, R0.data(), A0, false
+    );
+    A0.multiply(p.data(), Ap.data());
+    double worst0 = 0;
+    for (label s = 0; s < nw; ++s)
+    {
+        worst0 = std::max(worst0, std::abs(Ap[n + s] - R0[n + s]));
+    }
+    EXPECT_GT(worst0, 1e-3*scale);
+
+    // Water arriving at the floor at 0.5 m/s: div u* < 0 at the wall
+    // particles under it, and their solved pressure rises above the head
+    for (label i = 0; i < n; ++i) Uf[2*i + 1] = -g*dt - 0.5;
+    wallDivergence<2>
+    (
+        wf, Uf.data(), V.data(), Uw.data(), normal.data(),
+        dt*gv, divW.data()
+    );
+    std::fill(R.begin(), R.end(), 0.0);
+    for (label i = 0; i < n; ++i) R[i] = -rho*(m[2*i + 1]*(-g));
+    assemblePoissonWalls<2>
+    (
+        ff, blocks, V.data(), alpha.data(), divr.data(), divU.data(), rho,
+        dt, gv, R.data(), A
+    );
+    std::vector<double> pArr(p);
+    autoPtr<linearSolver> solver
+    (
+        linearSolver::New
+        (
+            dictionary(IStringStream("solver BiCGStab; tolerance 1e-12;"
+                " maxIter 2000;")())
+        )
+    );
+    ASSERT_TRUE(solver->solve(A, R.data(), pArr.data()).converged);
+    label rose = 0;
+    for (label s = 0; s < nw; ++s)
+    {
+        if (fx.x(1)(s, 1) < -dx) continue;
+        EXPECT_LT(divW[s], 0);
+        if (pArr[n + s] > p[n + s] + rho*0.5*dx/dt*0.1) ++rose;
+    }
+    EXPECT_EQ(rose, nx) << "every first-layer particle";
+}
+
+
+TEST(isphEquations, plainAndSumFormGradients)
+{
+    // projectionGradient (isph.H): the flagged particles take the
+    // gradient without the correction, B = I; on a lattice block it is
+    // within 2 % of the (exact) corrected one at the interior particles
+    // for a linear field. The sum form adds 2 p_i sum_j G_ij V_j x_ij:
+    // zero at the interior particles (a full, symmetric support), and at
+    // an edge particle of a uniform pressure it points into the block
+    // (-grad p pushes the particle off its neighbours)
+    const double dx = 0.01;
+    const label side = 12;
+    cloud<2> c(meshlessTest::latticePoints(2, side, dx), dx);
+    const std::vector<double> B = c.B();
+    std::vector<double> p(c.n), one(c.n, 1.0);
+    for (label i = 0; i < c.n; ++i) p[i] = 1 + 2*c.x(i, 0) - 3*c.x(i, 1);
+    const sourceData src{true, nullptr, nullptr, nullptr, nullptr};
+    const vectorD<2> g = vectorD<2>::Zero();
+    const std::vector<char> all(c.n, 1);
+    std::vector<double> gc(2*c.n), gPlain(2*c.n), gSum(2*c.n);
+    gather(c.n, c.sources, pressureGradientTerm<2>{&src, p.data(), B.data(), g, 1000, gc.data()});
+    gather(c.n, c.sources, pressureGradientTerm<2>{&src, p.data(), B.data(), g, 1000, gPlain.data(), all.data()});
+    label interior = 0;
+    for (label i = 0; i < c.n; ++i)
+    {
+        const double x = c.x(i, 0)/dx, y = c.x(i, 1)/dx;
+        if (x < 2.5 || y < 2.5 || x > side - 3.5 || y > side - 3.5) continue;
+        ++interior;
+        EXPECT_NEAR(gc[2*i], 2, 1e-10);
+        EXPECT_NEAR(gc[2*i + 1], -3, 1e-10);
+        EXPECT_NEAR(gPlain[2*i], 2, 0.04);
+        EXPECT_NEAR(gPlain[2*i + 1], -3, 0.06);
+    }
+    EXPECT_GT(interior, 20);
+
+    gather(c.n, c.sources, pressureGradientTerm<2>{&src, one.data(), B.data(), g, 1000, gSum.data(), all.data(), 2});
+    label edges = 0;
+    for (label i = 0; i < c.n; ++i)
+    {
+        const double x = c.x(i, 0)/dx, y = c.x(i, 1)/dx;
+        if (x > 2.5 && y > 2.5 && x < side - 3.5 && y < side - 3.5)
+        {
+            EXPECT_NEAR(gSum[2*i], 0, 1e-8);
+            EXPECT_NEAR(gSum[2*i + 1], 0, 1e-8);
+        }
+        if (x < 0.1 && y > 2.5 && y < side - 3.5)
+        {
+            ++edges;
+            EXPECT_GT(gSum[2*i], 10) << "into the block";
+            EXPECT_NEAR(gSum[2*i + 1], 0, 1e-8);
+        }
+    }
+    EXPECT_GT(edges, 3);
+}
+
+
+TEST(isphEquations, ghostAirGivesAThinLayerAPressure)
+{
+    // Still water three rows deep on a floor of 4 layers (wallPressure
+    // solved): with the Dirichlet condition on the surface particles the
+    // top row is p = 0; with ghost air (freeSurfacePressure ghostAir:
+    // D0 > 0) the top row is an unknown whose row has the diagonal
+    // max(D_i, D0) and the source -rho V div u*/dt only, and the solve
+    // gives every row a positive pressure that grows with depth
+    const double dx = 0.01, rho = 1000, dt = 1e-3, g = 9.81;
+    const label nx = 20, ny = 3;
+    std::vector<double> fluid, wall, normal;
+    for (label i = 0; i < nx; ++i)
+    {
+        for (label k = 0; k < ny; ++k)
+        {
+            fluid.push_back((i + 0.5)*dx);
+            fluid.push_back((k + 0.5)*dx);
+        }
+        for (label k = 0; k < 4; ++k)
+        {
+            wall.push_back((i + 0.5)*dx);
+            wall.push_back(-(k + 0.5)*dx);
+            normal.push_back(0);
+            normal.push_back(1);
+        }
+    }
+    meshlessTest::pairFixture fx(2);
+    fx.addBody(fluid, dx*dx);
+    fx.addBody(wall, dx*dx);
+    autoPtr<smoothingKernel> W(meshlessTest::kernel(2, dx, spline));
+    const neighbourRelation& ff = fx.relate(0, 0, *W);
+    const neighbourRelation& fw = fx.relate(0, 1, *W);
+    const neighbourRelation& wf = fx.relate(1, 0, *W);
+    const neighbourRelation& ww = fx.relate(1, 1, *W);
+    const std::vector<pairSource> sources = fx.sources(0);
+    const label n = fx.size(0), nw = fx.size(1);
+
+    std::vector<double> Uf(2*n, 0.0), Uw(2*nw, 0.0);
+    for (label i = 0; i < n; ++i) Uf[2*i + 1] = -g*dt;
+    const sourceData src[2] =
+    {
+        {true, Uf.data(), nullptr, nullptr, nullptr, nullptr},
+        {false, Uw.data(), nullptr, nullptr, normal.data(), nullptr}
+    };
+    std::vector<double> V(n, dx*dx), Vw(nw, dx*dx), divr(n), alpha(n);
+    std::vector<double> m(2*n), divU(n, 0.0), divW(nw);
+    gather
+    (
+        n, sources,
+        freeSurfaceTerm<2>
+        {
+            src, V.data(), 1.4, 1.6, divr.data(), alpha.data(), m.data()
+        }
+    );
+    const vectorD<2> gv(0, -g);
+    wallDivergence<2>
+    (
+        wf, Uf.data(), V.data(), Uw.data(), normal.data(), dt*gv,
+        divW.data()
+    );
+    std::vector<wallBlock> blocks
+    {
+        wallBlock{&fw, &wf, Vw.data(), nullptr, n, divW.data(), &ww}
+    };
+
+    // D0 of the full lattice
+    double D0 = 0;
+    for (label a = -3; a <= 3; ++a)
+    {
+        for (label b = -3; b <= 3; ++b)
+        {
+            const double r = dx*std::sqrt(double(a*a + b*b));
+            if (r > 0 && r < W->radius())
+            {
+                D0 += gradientFactor(r, W->dWdr(r));
+            }
+        }
+    }
+    D0 *= 2*std::pow(dx, 4);
+
+    autoPtr<linearSolver> solver
+    (
+        linearSolver::New
+        (
+            dictionary(IStringStream("solver BiCGStab; tolerance 1e-12;"
+                " maxIter 2000;")())
+        )
+    );
+    auto solve = [&](const double d0)
+    {
+        std::vector<double> R(n + nw, 0.0), p(n + nw, 0.0);
+        for (label i = 0; i < n; ++i) R[i] = -rho*(m[2*i + 1]*(-g));
+        sparseMatrix A;
+        assemblePoissonWalls<2>
+        (
+            ff, blocks, V.data(), alpha.data(), divr.data(), divU.data(),
+            rho, dt, gv, R.data(), A, true, d0
+        );
+        EXPECT_TRUE(solver->solve(A, R.data(), p.data()).converged);
+        return p;
+    };
+    const std::vector<double> pd = solve(0), pg = solve(D0);
+
+    // The middle column's rows, bottom to top
+    label tops = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        const double x = fx.x(0)(i, 0)/dx;
+        if (x < 4 || x > nx - 4) continue;
+        const label k = label(fx.x(0)(i, 1)/dx);
+        if (k == ny - 1)
+        {
+            ++tops;
+            EXPECT_EQ(alpha[i], 0);
+            EXPECT_EQ(pd[i], 0) << "Dirichlet on the surface particle";
+            EXPECT_GT(pg[i], 0.1*rho*g*dx) << "ghost air";
+            EXPECT_LT(pg[i], rho*g*dx);
+        }
+        else
+        {
+            // The row above it (same column: i + 1) holds less
+            EXPECT_GT(pg[i], pg[i + 1]);
+        }
+    }
+    EXPECT_GT(tops, 5);
 }

@@ -42,6 +42,50 @@ Foam::meshless::bodyModels::isph::wallPressureNames
 ({
     { wallPressureType::pairwise, "pairwise" },
     { wallPressureType::implicit, "implicit" },
+    { wallPressureType::solved, "solved" },
+});
+
+
+const Foam::Enum<Foam::meshless::bodyModels::isph::wallWettingType>
+Foam::meshless::bodyModels::isph::wallWettingNames
+({
+    { wallWettingType::interpolated, "interpolated" },
+    { wallWettingType::pair, "pair" },
+    { wallWettingType::all, "all" },
+});
+
+
+const Foam::Enum
+<
+    Foam::meshless::bodyModels::isph::projectionGradientType
+>
+Foam::meshless::bodyModels::isph::projectionGradientNames
+({
+    { projectionGradientType::corrected, "corrected" },
+    { projectionGradientType::surfaceUncorrected, "surfaceUncorrected" },
+    { projectionGradientType::uncorrected, "uncorrected" },
+    { projectionGradientType::surfaceSum, "surfaceSum" },
+    { projectionGradientType::surfaceGhost, "surfaceGhost" },
+});
+
+
+const Foam::Enum
+<
+    Foam::meshless::bodyModels::isph::freeSurfacePressureType
+>
+Foam::meshless::bodyModels::isph::freeSurfacePressureNames
+({
+    { freeSurfacePressureType::dirichlet, "dirichlet" },
+    { freeSurfacePressureType::ghostAir, "ghostAir" },
+});
+
+
+const Foam::Enum<Foam::meshless::bodyModels::isph::shiftNearWallsType>
+Foam::meshless::bodyModels::isph::shiftNearWallsNames
+({
+    { shiftNearWallsType::normal, "normal" },
+    { shiftNearWallsType::wallTangent, "wallTangent" },
+    { shiftNearWallsType::none, "none" },
 });
 
 
@@ -104,7 +148,19 @@ Foam::meshless::bodyModels::isph::isph
             wallPressureType::pairwise
         )
     ),
-    wallUnknowns_(wallPressure_ == wallPressureType::implicit),
+    wallUnknowns_(wallPressure_ != wallPressureType::pairwise),
+    wallRows_(wallPressure_ == wallPressureType::solved),
+    wallGradient_(dict.getOrDefault<bool>("wallGradient", true)),
+    wallWallPairs_(dict.getOrDefault<bool>("wallWallPairs", true)),
+    wetting_
+    (
+        readEnumOrDefault
+        (
+            dict, "wallWetting", wallWettingNames,
+            wallWettingType::interpolated
+        )
+    ),
+    wetPerPair_(wetting_ == wallWettingType::pair),
     densityRelax_
     (
         readNonNegativeOrDefault(dict, "densityInvariantRelaxation", 0)
@@ -112,6 +168,31 @@ Foam::meshless::bodyModels::isph::isph
     densityCompressionOnly_
     (
         dict.getOrDefault<bool>("densityInvariantCompressionOnly", false)
+    ),
+    projectionGradient_
+    (
+        readEnumOrDefault
+        (
+            dict, "projectionGradient", projectionGradientNames,
+            projectionGradientType::corrected
+        )
+    ),
+    ghostAir_
+    (
+        readEnumOrDefault
+        (
+            dict, "freeSurfacePressure", freeSurfacePressureNames,
+            freeSurfacePressureType::dirichlet
+        ) == freeSurfacePressureType::ghostAir
+    ),
+    surfaceDefect_(dict.getOrDefault<bool>("surfaceDefectCorrection", true)),
+    shiftNearWalls_
+    (
+        readEnumOrDefault
+        (
+            dict, "shiftNearWalls", shiftNearWallsNames,
+            shiftNearWallsType::normal
+        )
     ),
     solver_
     (
@@ -137,6 +218,7 @@ Foam::meshless::bodyModels::isph::isph
     gradPsi_(body.particles().addScratchField("gradPsi", particleField::kind::vector)),
     gradU_(body.particles().addScratchField("gradU", particleField::kind::tensor)),
     densityRatio_(body.particles().addScratchField("densityRatio", particleField::kind::scalar)),
+    pStart_(body.particles().addScratchField("pStart", particleField::kind::scalar)),
     mu_(0),
     viscosityEffect_(nullptr),
     shifting_(nullptr),
@@ -160,20 +242,40 @@ Foam::meshless::bodyModels::isph::isph
             << " solve: expected solver BiCGStab or BoomerAMG (or laplacian"
             << " symmetric)" << exit(FatalIOError);
     }
+    const word wallName = wallPressureNames[wallPressure_];
     if (wallUnknowns_ && solver_->needsSymmetric())
     {
         FatalIOErrorInFunction(dict)
-            << "wallPressure implicit gives a non-symmetric pressure"
-            << " matrix, which pressureSolver " << solver_->type()
+            << "wallPressure " << wallName << " gives a non-symmetric"
+            << " pressure matrix, which pressureSolver " << solver_->type()
             << " cannot solve: expected solver BiCGStab or BoomerAMG (or"
             << " wallPressure pairwise)" << exit(FatalIOError);
+    }
+    if (wetPerPair_ && wallPressure_ == wallPressureType::implicit)
+    {
+        FatalIOErrorInFunction(dict)
+            << "wallWetting pair takes the pairwise or solved wall"
+            << " pressure: expected wallPressure pairwise or solved"
+            << exit(FatalIOError);
+    }
+    if (wetting_ == wallWettingType::all && !wallRows_)
+    {
+        FatalIOErrorInFunction(dict)
+            << "wallWetting all takes the solved wall pressure: expected"
+            << " wallPressure solved" << exit(FatalIOError);
+    }
+    if (ghostAir_ && !wallUnknowns_)
+    {
+        FatalIOErrorInFunction(dict)
+            << "freeSurfacePressure ghostAir takes the walls as unknowns:"
+            << " expected wallPressure implicit or solved" << exit(FatalIOError);
     }
     if (wallUnknowns_ && consistent_)
     {
         FatalIOErrorInFunction(dict)
-            << "wallPressure implicit takes the symmetric Laplacian"
-            << " (its defect correction): expected laplacian symmetric"
-            << exit(FatalIOError);
+            << "wallPressure " << wallName << " takes the symmetric"
+            << " Laplacian (its defect correction): expected laplacian"
+            << " symmetric" << exit(FatalIOError);
     }
 }
 
@@ -190,20 +292,44 @@ void Foam::meshless::bodyModels::isph::connectModel(particleScene&)
     shifting_ = findEffect<effects::particleShifting>(body_);
     own_->cache(neighbourRelation::kernelGradient);
     if (densityRelax_ > 0) own_->cache(neighbourRelation::kernelValue);
-    for (boundary& b : boundaries_)
+    for (boundary& b : boundaries_) boundaryAdded(b);
+}
+
+
+void Foam::meshless::bodyModels::isph::boundaryAdded(boundary& b)
+{
+    b.toGhosts->cache(neighbourRelation::kernelGradient);
+    if (wallUnknowns_)
     {
-        b.toGhosts->cache(neighbourRelation::kernelGradient);
-        if (wallUnknowns_)
-        {
-            b.fromGhosts->cache(neighbourRelation::kernelGradient);
-        }
+        b.fromGhosts->cache(neighbourRelation::kernelGradient);
     }
+    if (!wallRows_) return;
+
+    // A ghostWall's particles with themselves for the wall rows: the
+    // wall's own relation (rigid: its pairs those of the start), its
+    // geometry at the current positions each step (moving walls); a
+    // coupled structure's surface takes rows over the fluid only
+    neighbourRelation* own = nullptr;
+    if (b.wall)
+    {
+        const particleBody& gb = b.ghosts->ghostBody();
+        own = &relations_->inner
+        (
+            gb.name() + " (ghosts)", gb.particles().positions(),
+            body_.kernel(), 0, false,
+            neighbourRelation::separation | neighbourRelation::kernelGradient
+        );
+        relations_->update(*own);
+        own->updateGeometry();
+    }
+    wallOwn_.push_back(own);
 }
 
 
 void Foam::meshless::bodyModels::isph::setSources()
 {
     src_.resize(1 + boundaries_.size());
+    surfaceSrc_.resize(1 + boundaries_.size());
     viscSrc_.resize(1 + boundaries_.size());
     src_[0] = isphEquations::sourceData
     {
@@ -221,6 +347,13 @@ void Foam::meshless::bodyModels::isph::setSources()
         {
             false, g.U(), g.accelerations(), g.p(), g.normals(), nullptr
         };
+        if (wetPerPair_)
+        {
+            src_[k + 1].pPair = pStart_.data();
+            src_[k + 1].rho = rho0_;
+            for (label d = 0; d < 3; ++d) src_[k + 1].g[d] = g_[d];
+        }
+        if (wetting_ == wallWettingType::all) src_[k + 1].pWall = nullptr;
         viscSrc_[k + 1] = riemannEquations::sourceData
         {
             false, nullptr, nullptr, g.U(), g.accelerations(), g.normals(),
@@ -301,12 +434,74 @@ void Foam::meshless::bodyModels::isph::shift
                 const vectorD<Dim> nrm = -gp/gm;
                 dr -= dr.dot(nrm)*nrm;
             }
+            if (shiftNearWalls_ != shiftNearWallsType::normal)
+            {
+                // The nearest wall particle within h (normal into it)
+                double rmin = h;
+                const double* nw = nullptr;
+                for (const boundary& b : boundaries_)
+                {
+                    const neighbourRelation& tw = *b.toGhosts;
+                    const label* o = tw.offsetData();
+                    const label* js = tw.indexData();
+                    const double* rs = tw.r();
+                    const double* ns = b.ghosts->normals();
+                    for (label q = o[i]; q < o[i + 1]; ++q)
+                    {
+                        if (rs[q] < rmin)
+                        {
+                            rmin = rs[q];
+                            nw = ns ? ns + js[q]*Dim : nullptr;
+                        }
+                    }
+                }
+                if (rmin < h)
+                {
+                    if (shiftNearWalls_ == shiftNearWallsType::none)
+                    {
+                        dr = vectorD<Dim>::Zero();
+                    }
+                    else if (nw)
+                    {
+                        const auto nn = cvec<Dim>(nw, 0);
+                        const double into = dr.dot(nn);
+                        if (into > 0) dr -= into*nn;
+                    }
+                }
+            }
         }
 
         if (correctU) vec<Dim>(U, i) += ctens<Dim>(gradU_.data(), i)*dr;
         p[i] += cvec<Dim>(gradP_.data(), i).dot(dr);
         vec<Dim>(x, i) += dr;
     }
+}
+
+
+template<int Dim>
+Foam::scalar Foam::meshless::bodyModels::isph::fullLatticeD() const
+{
+    // D0 = 2 V^2 sum_j G(r_j) over a full lattice of the spacing
+    const smoothingKernel& W = body_.kernel();
+    const scalar dx = body_.spacing();
+    const label K = label(std::ceil(W.radius()/dx));
+    scalar sum = 0;
+    for (label a = -K; a <= K; ++a)
+    {
+        for (label b = -K; b <= K; ++b)
+        {
+            for (label c = (Dim == 3 ? -K : 0); c <= (Dim == 3 ? K : 0); ++c)
+            {
+                const scalar r = dx*std::sqrt(scalar(a*a + b*b + c*c));
+                if (r > 0 && r < W.radius())
+                {
+                    sum += gradientFactor(r, W.dWdr(r));
+                }
+            }
+        }
+    }
+    const scalar V = std::pow(dx, Dim);
+    return 2*V*V*sum;
 }
 
 
@@ -391,9 +586,9 @@ void Foam::meshless::bodyModels::isph::advanceDim
             n, ctx_.sources,
             freeSurfaceTerm<Dim>
             {
-                src_.data(), V_.data(), surface_.first(), surface_.second(),
-                divr_.data(),
-                alpha_.data(), moment_.data()
+                surfaceSrc_.data(), V_.data(), surface_.first(),
+                surface_.second(), divr_.data(), alpha_.data(),
+                moment_.data(), wallRows_
             }
         );
         gather
@@ -450,14 +645,36 @@ void Foam::meshless::bodyModels::isph::advanceDim
                 }
             );
         }
+        // On or within h of the free surface at x*
+        {
+            nearSurface_.assign(n, 0);
+            const neighbourRelation& rel = *own_;
+            const label* off = rel.offsetData();
+            const label* idx = rel.indexData();
+            const double* r = rel.r();
+            const double* alpha = alpha_.data();
+            char* ns = nearSurface_.data();
+            #pragma omp parallel for schedule(static)
+            for (label i = 0; i < n; ++i)
+            {
+                bool s = alpha[i] < 1;
+                for (label q = off[i]; q < off[i + 1] && !s; ++q)
+                {
+                    s = r[q] < h && alpha[idx[q]] < 1;
+                }
+                ns[i] = s;
+            }
+        }
         if (!consistent_)
         {
             const double* m = moment_.data();
             const double* gp = gradP_.data();
             double* R = rhs_.data();
+            const char* ns = surfaceDefect_ ? nullptr : nearSurface_.data();
             #pragma omp parallel for schedule(static)
             for (label i = 0; i < n; ++i)
             {
+                if (ns && ns[i]) continue;
                 double c = 0;
                 for (int d = 0; d < Dim; ++d) c += m[i*Dim + d]*gp[i*Dim + d];
                 R[i] -= c;
@@ -477,12 +694,30 @@ void Foam::meshless::bodyModels::isph::advanceDim
                         b.ghosts->accelerations(), wallOffset_[k]
                     }
                 );
+                if (wallRows_)
+                {
+                    // The wall rows' source: div u* at the wall particles
+                    std::vector<double>& dw = wallDiv_[k];
+                    dw.resize(b.fromGhosts->size());
+                    wallDivergence<Dim>
+                    (
+                        *b.fromGhosts, Us, V_.data(), b.ghosts->U(),
+                        b.ghosts->normals(), dt*g, dw.data()
+                    );
+                    if (wallOwn_[k] && b.ghosts->moving())
+                    {
+                        wallOwn_[k]->updateGeometry();
+                    }
+                    blocks.back().div = dw.data();
+                    if (wallWallPairs_) blocks.back().own = wallOwn_[k];
+                }
             }
             std::copy(rhs_.data(), rhs_.data() + n, bAll_.begin());
             isphEquations::assemblePoissonWalls<Dim>
             (
                 *own_, blocks, V_.data(), alpha_.data(), divr_.data(),
-                divU_.data(), rho0_, dt, g, bAll_.data(), A_
+                divU_.data(), rho0_, dt, g, bAll_.data(), A_, wallGradient_,
+                ghostAir_ ? fullLatticeD<Dim>() : 0
             );
             std::copy(bAll_.begin(), bAll_.begin() + n, rhs_.data());
         }
@@ -555,12 +790,29 @@ void Foam::meshless::bodyModels::isph::advanceDim
     // 3. Projection and positions
     {
         costAccounting::scope timer(costs, projectionCost_);
+        std::vector<char> everywhere;
+        const char* plain = nullptr;
+        if (projectionGradient_ == projectionGradientType::uncorrected)
+        {
+            everywhere.assign(n, 1);
+            plain = everywhere.data();
+        }
+        else if (projectionGradient_ != projectionGradientType::corrected)
+        {
+            plain = nearSurface_.data();
+        }
         gather
         (
             n, ctx_.sources,
             pressureGradientTerm<Dim>
             {
-                src_.data(), p_.data(), B_.data(), g, rho0_, gradP_.data()
+                src_.data(), p_.data(), B_.data(), g, rho0_, gradP_.data(),
+                plain,
+                projectionGradient_ == projectionGradientType::surfaceSum
+              ? 2.0
+              : projectionGradient_ == projectionGradientType::surfaceGhost
+              ? 1.0
+              : 0.0
             }
         );
         const double* gp = gradP_.data();
@@ -666,7 +918,15 @@ void Foam::meshless::bodyModels::isph::advance
     interpolateBoundaries();
     if (p_.maxMagnitude() == 0)
     {
-        for (size_t k = 1; k < src_.size(); ++k) src_[k].pWall = nullptr;
+        for (size_t k = 1; k < src_.size(); ++k)
+        {
+            src_[k].pWall = nullptr;
+            src_[k].pPair = nullptr;
+        }
+    }
+    if (wetPerPair_)
+    {
+        std::copy(p_.data(), p_.data() + p_.size(), pStart_.data());
     }
 
     // With the walls as unknowns every wall particle takes part, with the
@@ -692,12 +952,21 @@ void Foam::meshless::bodyModels::isph::advance
             }
         }
         bAll_.resize(N);
+        wallDiv_.resize(boundaries_.size());
+        for (size_t k = 0; k < boundaries_.size(); ++k)
+        {
+            src_[k + 1].pSolved = pAll_.data() + wallOffset_[k];
+        }
+        // Solved: the wetting rule for the free surface's div r only,
+        // every wall particle in every other term
+        if (wallRows_) surfaceSrc_ = src_;
         for (size_t k = 0; k < boundaries_.size(); ++k)
         {
             src_[k + 1].pWall = nullptr;
-            src_[k + 1].pSolved = pAll_.data() + wallOffset_[k];
+            src_[k + 1].pPair = nullptr;
         }
     }
+    if (!wallRows_) surfaceSrc_ = src_;
     dispatchDim(body_.dim(), [&](auto d) { advanceDim<d>(t, dt, costs); });
 }
 
