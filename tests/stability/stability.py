@@ -112,6 +112,8 @@ CASES = [
                     ["-dx", "0.003"]),
              Method("Riemann WCSPH", "tutorials/riemannSphFoam/damBreak",
                     ["-dx", "0.003"]),
+             Method("ISPH", "tutorials/isphTlsphFoam/damBreak",
+                    ["-dx", "0.002"]),
          ]),
     Case("liaoPlate", "Liao plate: a violent impact on a thin elastic"
          " plate (1 s)", [
