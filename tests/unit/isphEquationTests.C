@@ -529,19 +529,18 @@ TEST(isphEquations, wallPairDryAboveTheWatersLevel)
 }
 
 
-TEST(isphEquations, solvedWallRowsHoldHydrostaticsAndRiseUnderAnArrival)
+//- Water nx x ny lattice points of spacing dx over a floor of 4 layers
+//  below y = 0 (wall normals (0 1): the tests use their normal parts only)
+static void waterOnFloor
+(
+    const label nx,
+    const label ny,
+    const double dx,
+    std::vector<double>& fluid,
+    std::vector<double>& wall,
+    std::vector<double>& normal
+)
 {
-    // Water 12 rows deep over a floor of 4 layers (wallPressure solved):
-    // with div u* = 0 the hydrostatic pressure p = rho |g| (y_s - y),
-    // walls included, solves every row whose fluid neighbours are all
-    // unknowns (the fluid's with the defect correction m_i . grad p, the
-    // walls' with their known gradient rho g), to round-off; the wall
-    // particles without fluid in their support (the deepest layers) are
-    // p = 0 rows. Water moving down into the floor gives the wall
-    // particles under it div u* < 0 and raises their solved pressure
-    const double dx = 0.01, rho = 1000, dt = 1e-3, g = 9.81;
-    const label nx = 24, ny = 12;
-    std::vector<double> fluid, wall, normal;
     for (label i = 0; i < nx; ++i)
     {
         for (label k = 0; k < ny; ++k)
@@ -557,6 +556,23 @@ TEST(isphEquations, solvedWallRowsHoldHydrostaticsAndRiseUnderAnArrival)
             normal.push_back(1);
         }
     }
+}
+
+
+TEST(isphEquations, solvedWallRowsHoldHydrostaticsAndRiseUnderAnArrival)
+{
+    // Water 12 rows deep over a floor of 4 layers (wallPressure solved):
+    // with div u* = 0 the hydrostatic pressure p = rho |g| (y_s - y),
+    // walls included, solves every row whose fluid neighbours are all
+    // unknowns (the fluid's with the defect correction m_i . grad p, the
+    // walls' with their known gradient rho g), to round-off; the wall
+    // particles without fluid in their support (the deepest layers) are
+    // p = 0 rows. Water moving down into the floor gives the wall
+    // particles under it div u* < 0 and raises their solved pressure
+    const double dx = 0.01, rho = 1000, dt = 1e-3, g = 9.81;
+    const label nx = 24, ny = 12;
+    std::vector<double> fluid, wall, normal;
+    waterOnFloor(nx, ny, dx, fluid, wall, normal);
     meshlessTest::pairFixture fx(2);
     fx.addBody(fluid, dx*dx);
     fx.addBody(wall, dx*dx);
@@ -774,21 +790,7 @@ TEST(isphEquations, ghostAirGivesAThinLayerAPressure)
     const double dx = 0.01, rho = 1000, dt = 1e-3, g = 9.81;
     const label nx = 20, ny = 3;
     std::vector<double> fluid, wall, normal;
-    for (label i = 0; i < nx; ++i)
-    {
-        for (label k = 0; k < ny; ++k)
-        {
-            fluid.push_back((i + 0.5)*dx);
-            fluid.push_back((k + 0.5)*dx);
-        }
-        for (label k = 0; k < 4; ++k)
-        {
-            wall.push_back((i + 0.5)*dx);
-            wall.push_back(-(k + 0.5)*dx);
-            normal.push_back(0);
-            normal.push_back(1);
-        }
-    }
+    waterOnFloor(nx, ny, dx, fluid, wall, normal);
     meshlessTest::pairFixture fx(2);
     fx.addBody(fluid, dx*dx);
     fx.addBody(wall, dx*dx);
