@@ -530,33 +530,46 @@ TEST(isphEquations, wallPairDryAboveTheWatersLevel)
 
 
 //- Water nx x ny lattice points of spacing dx over a floor of 4 layers
-//  below y = 0 (wall normals (0 1): the tests use their normal parts only)
-static void waterOnFloor
-(
-    const label nx,
-    const label ny,
-    const double dx,
-    std::vector<double>& fluid,
-    std::vector<double>& wall,
-    std::vector<double>& normal
-)
+//  below y = 0 (wall normals (0 1): the tests use their normal parts only),
+//  related both ways and each to itself with the cubic spline, h = 1.2 dx
+struct waterOnFloor
 {
-    for (label i = 0; i < nx; ++i)
+    std::vector<double> fluid, wall, normal;
+    meshlessTest::pairFixture fx;
+    autoPtr<smoothingKernel> W;
+    const neighbourRelation* ff;
+    const neighbourRelation* fw;
+    const neighbourRelation* wf;
+    const neighbourRelation* ww;
+
+    waterOnFloor(const label nx, const label ny, const double dx)
+    :
+        fx(2),
+        W(meshlessTest::kernel(2, dx, spline))
     {
-        for (label k = 0; k < ny; ++k)
+        for (label i = 0; i < nx; ++i)
         {
-            fluid.push_back((i + 0.5)*dx);
-            fluid.push_back((k + 0.5)*dx);
+            for (label k = 0; k < ny; ++k)
+            {
+                fluid.push_back((i + 0.5)*dx);
+                fluid.push_back((k + 0.5)*dx);
+            }
+            for (label k = 0; k < 4; ++k)
+            {
+                wall.push_back((i + 0.5)*dx);
+                wall.push_back(-(k + 0.5)*dx);
+                normal.push_back(0);
+                normal.push_back(1);
+            }
         }
-        for (label k = 0; k < 4; ++k)
-        {
-            wall.push_back((i + 0.5)*dx);
-            wall.push_back(-(k + 0.5)*dx);
-            normal.push_back(0);
-            normal.push_back(1);
-        }
+        fx.addBody(fluid, dx*dx);
+        fx.addBody(wall, dx*dx);
+        ff = &fx.relate(0, 0, *W);
+        fw = &fx.relate(0, 1, *W);
+        wf = &fx.relate(1, 0, *W);
+        ww = &fx.relate(1, 1, *W);
     }
-}
+};
 
 
 TEST(isphEquations, solvedWallRowsHoldHydrostaticsAndRiseUnderAnArrival)
@@ -571,16 +584,13 @@ TEST(isphEquations, solvedWallRowsHoldHydrostaticsAndRiseUnderAnArrival)
     // particles under it div u* < 0 and raises their solved pressure
     const double dx = 0.01, rho = 1000, dt = 1e-3, g = 9.81;
     const label nx = 24, ny = 12;
-    std::vector<double> fluid, wall, normal;
-    waterOnFloor(nx, ny, dx, fluid, wall, normal);
-    meshlessTest::pairFixture fx(2);
-    fx.addBody(fluid, dx*dx);
-    fx.addBody(wall, dx*dx);
-    autoPtr<smoothingKernel> W(meshlessTest::kernel(2, dx, spline));
-    const neighbourRelation& ff = fx.relate(0, 0, *W);
-    const neighbourRelation& fw = fx.relate(0, 1, *W);
-    const neighbourRelation& wf = fx.relate(1, 0, *W);
-    const neighbourRelation& ww = fx.relate(1, 1, *W);
+    waterOnFloor scene(nx, ny, dx);
+    meshlessTest::pairFixture& fx = scene.fx;
+    const std::vector<double>& normal = scene.normal;
+    const neighbourRelation& ff = *scene.ff;
+    const neighbourRelation& fw = *scene.fw;
+    const neighbourRelation& wf = *scene.wf;
+    const neighbourRelation& ww = *scene.ww;
     const std::vector<pairSource> sources = fx.sources(0);
     const label n = fx.size(0), nw = fx.size(1);
 
@@ -789,16 +799,14 @@ TEST(isphEquations, ghostAirGivesAThinLayerAPressure)
     // gives every row a positive pressure that grows with depth
     const double dx = 0.01, rho = 1000, dt = 1e-3, g = 9.81;
     const label nx = 20, ny = 3;
-    std::vector<double> fluid, wall, normal;
-    waterOnFloor(nx, ny, dx, fluid, wall, normal);
-    meshlessTest::pairFixture fx(2);
-    fx.addBody(fluid, dx*dx);
-    fx.addBody(wall, dx*dx);
-    autoPtr<smoothingKernel> W(meshlessTest::kernel(2, dx, spline));
-    const neighbourRelation& ff = fx.relate(0, 0, *W);
-    const neighbourRelation& fw = fx.relate(0, 1, *W);
-    const neighbourRelation& wf = fx.relate(1, 0, *W);
-    const neighbourRelation& ww = fx.relate(1, 1, *W);
+    waterOnFloor scene(nx, ny, dx);
+    meshlessTest::pairFixture& fx = scene.fx;
+    const std::vector<double>& normal = scene.normal;
+    const neighbourRelation& ff = *scene.ff;
+    const neighbourRelation& fw = *scene.fw;
+    const neighbourRelation& wf = *scene.wf;
+    const neighbourRelation& ww = *scene.ww;
+    const autoPtr<smoothingKernel>& W = scene.W;
     const std::vector<pairSource> sources = fx.sources(0);
     const label n = fx.size(0), nw = fx.size(1);
 
