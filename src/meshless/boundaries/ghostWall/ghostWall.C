@@ -186,15 +186,52 @@ Foam::septernion Foam::meshless::bodyModels::ghostWall::transformationAt
 }
 
 
+namespace
+{
+    //- The step of the motion's central differences [s]
+    const Foam::scalar motionStep = 1e-4;
+}
+
+
+void Foam::meshless::bodyModels::ghostWall::transformationsAround
+(
+    const scalar t,
+    septernion& Tm,
+    septernion& T0,
+    septernion& Tp
+)
+{
+    Tm = transformationAt(t - motionStep);
+    T0 = transformationAt(t);
+    Tp = transformationAt(t + motionStep);
+}
+
+
+void Foam::meshless::bodyModels::ghostWall::pointRates
+(
+    const septernion& Tm,
+    const septernion& Tp,
+    const vector& X,
+    const vector& xc,
+    vector& v,
+    vector& a
+)
+{
+    const scalar d = motionStep;
+    const vector xm = Tm.transformPoint(X);
+    const vector xp = Tp.transformPoint(X);
+    v = (xp - xm)/(2*d);
+    a = (xp - 2*xc + xm)/(d*d);
+}
+
+
 void Foam::meshless::bodyModels::ghostWall::moveTo(const scalar t)
 {
     if (!motion_.valid() || t == movedTo_) return;
 
     // Central differences of the rigid transformation
-    const scalar d = 1e-4;
-    const septernion Tm = transformationAt(t - d);
-    const septernion T0 = transformationAt(t);
-    const septernion Tp = transformationAt(t + d);
+    septernion Tm, T0, Tp;
+    transformationsAround(t, Tm, T0, Tp);
 
     particleSet& set = body_.particles();
     const label dim = set.dim();
@@ -210,16 +247,16 @@ void Foam::meshless::bodyModels::ghostWall::moveTo(const scalar t)
             p0[c] = (*x0_)(i, c);
             n0[c] = (*n0_)(i, c);
         }
-        const vector xm = Tm.transformPoint(p0);
         const vector xc = T0.transformPoint(p0);
-        const vector xp = Tp.transformPoint(p0);
         const vector nc = T0.r().transform(n0);
+        vector v, a;
+        pointRates(Tm, Tp, p0, xc, v, a);
         for (label c = 0; c < dim; ++c)
         {
             x(i, c) = xc[c];
             n(i, c) = nc[c];
-            U_(i, c) = (xp[c] - xm[c])/(2*d);
-            (*acc_)(i, c) = (xp[c] - 2*xc[c] + xm[c])/(d*d);
+            U_(i, c) = v[c];
+            (*acc_)(i, c) = a[c];
         }
     }
     R_ = T0.r().R();
@@ -243,22 +280,19 @@ void Foam::meshless::bodyModels::ghostWall::frameKinematics
     if (!motion_.valid()) return;
 
     // The same central differences as moveTo's
-    const scalar d = 1e-4;
-    const septernion Tm = transformationAt(t - d);
-    const septernion T0 = transformationAt(t);
-    const septernion Tp = transformationAt(t + d);
+    septernion Tm, T0, Tp;
+    transformationsAround(t, Tm, T0, Tp);
     for (label i = 0; i < n; ++i)
     {
         vector p(Zero);
         p.z() = zPlane_;
         for (label c = 0; c < dim; ++c) p[c] = x[i*dim + c];
-        const vector X = T0.invTransformPoint(p);
-        const vector xm = Tm.transformPoint(X);
-        const vector xp = Tp.transformPoint(X);
+        vector vi, ai;
+        pointRates(Tm, Tp, T0.invTransformPoint(p), p, vi, ai);
         for (label c = 0; c < dim; ++c)
         {
-            v[i*dim + c] = (xp[c] - xm[c])/(2*d);
-            a[i*dim + c] = (xp[c] - 2*p[c] + xm[c])/(d*d);
+            v[i*dim + c] = vi[c];
+            a[i*dim + c] = ai[c];
         }
     }
 }

@@ -8,7 +8,6 @@
 #include "gravity.H"
 #include "restartManifest.H"
 #include "ghostWall.H"
-#include "dictionaryChecks.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
