@@ -41,6 +41,7 @@ ends with what an effect the scene does not name costs
 (benchmarks/unusedEffect). Exits 1 when a run failed or gave no finite
 error.
 """
+import argparse
 import collections
 import hashlib
 import importlib.util
@@ -56,7 +57,7 @@ sys.path.insert(0, os.path.join(PROJECT, "etc", "python"))
 
 import damBreakFront  # noqa: E402
 import elasticGate  # noqa: E402
-from foamDict import read_dictionary  # noqa: E402
+from foamDict import put_entry  # noqa: E402
 from foamMonitor import pyplot, run_cost  # noqa: E402
 
 
@@ -307,17 +308,9 @@ def run_case(scene, method, value, work, threads, build):
         shutil.copytree(tutorial, case, ignore=shutil.ignore_patterns(
             "[0-9]*", "postProcessing", "log.*", "*.foam", "processor*"))
         subprocess.run(["./Allclean"], cwd=case, capture_output=True)
-        if scene.monitors and "monitors" not in read_dictionary(
-                case, "constant/particleProperties"):
-            subprocess.run(["foamDictionary", "constant/particleProperties",
-                            "-entry", "monitors", "-add", "{}"], cwd=case,
-                           capture_output=True, check=True)
         for name, text in scene.monitors.items():
-            for action in ("-add", "-set"):
-                subprocess.run(["foamDictionary",
-                                "constant/particleProperties", "-entry",
-                                "monitors/" + name, action, text], cwd=case,
-                               capture_output=True, check=True)
+            put_entry(case, "constant/particleProperties",
+                      "monitors/" + name, text)
         if scene.end is not None:
             subprocess.run(["foamDictionary", "system/controlDict", "-entry",
                             "endTime", "-set", "%g" % scene.end], cwd=case,
@@ -500,33 +493,22 @@ def plot(scene, rows, path):
 
 
 def main(argv):
-    quick = "-quick" in argv
-    scenes, methods, threads = [], [], 2
-    work, out = os.path.join(HERE, "runs"), HERE
-    k = 0
-    while k < len(argv):
-        a = argv[k]
-        if a in ("-scene", "-method", "-threads", "-work", "-report"):
-            if k + 1 >= len(argv):
-                print("%s needs a value\n%s" % (a, __doc__))
-                return 2
-            v = argv[k + 1]
-            if a == "-scene":
-                scenes.append(v)
-            elif a == "-method":
-                methods.append(v)
-            elif a == "-threads":
-                threads = int(v)
-            elif a == "-work":
-                work = os.path.abspath(v)
-            else:
-                out = os.path.abspath(v)
-            k += 2
-        elif a == "-quick":
-            k += 1
-        else:
-            print("unknown argument %s\n%s" % (a, __doc__))
-            return 2
+    parser = argparse.ArgumentParser(prog="Allrun", add_help=False,
+                                     allow_abbrev=False)
+    parser.add_argument("-quick", action="store_true")
+    parser.add_argument("-scene", action="append", default=[])
+    parser.add_argument("-method", action="append", default=[])
+    parser.add_argument("-threads", type=int, default=2)
+    parser.add_argument("-work", default=os.path.join(HERE, "runs"))
+    parser.add_argument("-report", default=HERE)
+    try:
+        opts = parser.parse_args(argv)
+    except SystemExit:
+        print(__doc__)
+        return 2
+    quick, scenes, methods = opts.quick, opts.scene, opts.method
+    threads = opts.threads
+    work, out = os.path.abspath(opts.work), os.path.abspath(opts.report)
     known = {s.name for s in SCENES}
     for s in scenes:
         if s not in known:

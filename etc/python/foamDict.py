@@ -9,6 +9,8 @@ dictionary file by pattern.
     dictionary_entry(case, "endTime", "system/controlDict")
     props = read_dictionary(case, "constant/particleProperties")
     lookup(props, "bodies/water/kernel/horizon", "3")
+    put_entry(case, "constant/particleProperties", "monitors/energy",
+              "{ type energy; }")
 
 Values are as foamDictionary writes them: a single word or number as a
 string ("2", "2.1e+11", "taylor"), more than one as a list, a (...) list as
@@ -38,6 +40,31 @@ def read_dictionary(case, dictionary):
     entries, _ = _entries(tokens, 0, None)
     entries.pop("FoamFile", None)
     return entries
+
+
+def put_entry(case, dictionary, entry, value):
+    """Add or set the '/'-scoped entry of a case dictionary (foamDictionary
+    -add, then -set, which also replaces a sub-dictionary by a value); the
+    sub-dictionaries on its path that the dictionary lacks are added empty
+    first. Raises RuntimeError with foamDictionary's output on failure"""
+    def run(key, action, text):
+        p = subprocess.run(
+            ["foamDictionary", dictionary, "-entry", key, action, text],
+            cwd=case, env=dict(os.environ, PWD=os.path.abspath(case)),
+            capture_output=True, text=True)
+        if p.returncode != 0:
+            raise RuntimeError("foamDictionary %s -entry %s %s in %s"
+                               " failed:\n%s" % (dictionary, key, action,
+                                                  case, p.stdout + p.stderr))
+    parts = entry.split("/")
+    if len(parts) > 1:
+        entries = read_dictionary(case, dictionary)
+        for k in range(1, len(parts)):
+            key = "/".join(parts[:k])
+            if lookup(entries, key, None) is None:
+                run(key, "-add", "{}")
+    for action in ("-add", "-set"):
+        run(entry, action, str(value))
 
 
 def lookup(entries, key, default=REQUIRED):

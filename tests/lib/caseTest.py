@@ -15,6 +15,9 @@ project_dir = os.path.dirname(os.path.dirname(os.path.dirname(
     os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(project_dir, "etc", "python"))
 
+# Add or set a case dictionary's entry (the project's dictionary library)
+from foamDict import put_entry  # noqa: E402,F401
+
 
 class CaseTest:
     def __init__(self, name):
@@ -55,7 +58,8 @@ def copy_case(src, dst, stored_results=True):
     there is all there is."""
     shutil.copytree(src, dst, ignore=shutil.ignore_patterns(
         "[0-9]*", "log.*", "*.foam", "polyMesh", "VTK", "postProcessing",
-        "resolution", "runParameters"))
+        "processor*", "resolution", "runParameters", "runTime",
+        "integrator"))
     if not stored_results and os.path.isdir(os.path.join(src, "validation")):
         shutil.rmtree(os.path.join(dst, "validation"))
         shutil.copytree(os.path.join(src, "validation"),
@@ -126,16 +130,6 @@ def set_entry(case, dict_file, entry, value):
                      str(value)], case)
     if code != 0:
         raise RuntimeError(out)
-
-
-def put_entry(case, dict_file, entry, value):
-    """Add or set <entry> of a case dictionary (foamDictionary -add, then
-    -set, which also replaces a sub-dictionary by a value)."""
-    for action in ("-add", "-set"):
-        code, out = run(["foamDictionary", dict_file, "-entry", entry,
-                         action, str(value)], case)
-        if code != 0:
-            raise RuntimeError(out)
 
 
 def refused_entries(t, source, work, solver, cases,

@@ -52,6 +52,7 @@ not start.
 
 Adding a method to a case, or a case, is one entry in CASES.
 """
+import argparse
 import collections
 import math
 import os
@@ -64,9 +65,11 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 PROJECT = os.path.abspath(os.path.join(HERE, "..", ".."))
 sys.path.insert(0, os.path.join(PROJECT, "etc", "python"))
+sys.path.insert(0, os.path.join(PROJECT, "tests", "lib"))
 
 from foamCloud import read_cloud, times  # noqa: E402
-from foamDict import read_dictionary, lookup  # noqa: E402
+from caseTest import copy_case  # noqa: E402
+from foamDict import lookup, put_entry, read_dictionary  # noqa: E402
 from foamMonitor import monitor_rows, run_cost  # noqa: E402
 from fsiChecks import largest_rise  # noqa: E402
 
@@ -149,16 +152,6 @@ def verdict(good):
 
 # * * * * * * * * * * * * * * * * The runs  * * * * * * * * * * * * * * * //
 
-def foam_dictionary(case, path, entry, value):
-    """Add or set an entry of a case dictionary (foamDictionary)"""
-    for action in ("-add", "-set"):
-        p = subprocess.run(["foamDictionary", path, "-entry", entry, action,
-                            value], cwd=case, capture_output=True, text=True)
-        if p.returncode != 0:
-            raise RuntimeError("foamDictionary %s -entry %s %s: %s"
-                               % (path, entry, action, p.stdout + p.stderr))
-
-
 def make_run(method, full, work, threads):
     """A clean copy of the tutorial run by its Allrun; returns (case, Allrun
     exit code, wall seconds)"""
@@ -167,21 +160,16 @@ def make_run(method, full, work, threads):
                         + "".join(c for c in method.name if c.isalnum()))
     if os.path.isdir(case):
         shutil.rmtree(case)
-    shutil.copytree(tutorial, case, ignore=shutil.ignore_patterns(
-        "[0-9]*", "postProcessing", "log.*", "*.foam", "processor*",
-        "runs", "*.png", "result*.md", "resolution", "runParameters",
-        "runTime", "integrator"))
+    copy_case(tutorial, case, stored_results=False)
     subprocess.run(["./Allclean"], cwd=case, capture_output=True)
     monitor = "{ type energy; interval 1; %s}" % (
         "frame %s; " % method.frame if method.frame else "")
-    props = "constant/particleProperties"
-    if "monitors" not in read_dictionary(case, props):
-        foam_dictionary(case, props, "monitors", "{}")
-    foam_dictionary(case, props, "monitors/stabilityEnergy", monitor)
+    put_entry(case, "constant/particleProperties",
+              "monitors/stabilityEnergy", monitor)
     args = method.full if full else method.coarse
     end = None if full else method.coarse_end
     if end is not None:
-        foam_dictionary(case, "system/controlDict", "endTime", "%g" % end)
+        put_entry(case, "system/controlDict", "endTime", "%g" % end)
         # The tutorials' own '-end' writes system/runTime, which wins
         if open(os.path.join(case, "Allrun")).read().find("-end)") >= 0:
             args = args + ["-end", "%g" % end]
@@ -417,31 +405,22 @@ INVARIANTS = ("reached", "finite", "particles", "depth", "energy", "splash")
 
 
 def main(argv, name="stability"):
-    full = "-full" in argv
-    keep = "-keep" in argv
-    cases, methods, threads, work = [], [], 2, None
-    k = 0
-    while k < len(argv):
-        a = argv[k]
-        if a in ("-case", "-method", "-threads", "-work"):
-            if k + 1 >= len(argv):
-                print("%s needs a value\n%s" % (a, __doc__))
-                return 2
-            v = argv[k + 1]
-            if a == "-case":
-                cases.append(v)
-            elif a == "-method":
-                methods.append(v)
-            elif a == "-threads":
-                threads = int(v)
-            else:
-                work = os.path.abspath(v)
-            k += 2
-        elif a in ("-full", "-keep"):
-            k += 1
-        else:
-            print("unknown argument %s\n%s" % (a, __doc__))
-            return 2
+    parser = argparse.ArgumentParser(prog="Allrun", add_help=False,
+                                     allow_abbrev=False)
+    parser.add_argument("-full", action="store_true")
+    parser.add_argument("-keep", action="store_true")
+    parser.add_argument("-case", action="append", default=[])
+    parser.add_argument("-method", action="append", default=[])
+    parser.add_argument("-threads", type=int, default=2)
+    parser.add_argument("-work")
+    try:
+        opts = parser.parse_args(argv)
+    except SystemExit:
+        print(__doc__)
+        return 2
+    full, keep = opts.full, opts.keep
+    cases, methods, threads = opts.case, opts.method, opts.threads
+    work = os.path.abspath(opts.work) if opts.work else None
     known = {c.name for c in CASES}
     for c in cases:
         if c not in known:
