@@ -61,7 +61,8 @@ Foam::meshless::couplings::riemannTlsph::riemannTlsph
             << " has model " << fluidBody_->dict().get<word>("model")
             << ", which takes no acoustic steps: expected a weakly"
             << " compressible fluid with them (riemannWcsph), or coupling"
-            << " ulphPd" << exit(FatalIOError);
+            << " ulphPd, or isphTlsph for a projection fluid (isph)"
+            << exit(FatalIOError);
     }
     for (particleBody* sb : solidBodies_)
     {

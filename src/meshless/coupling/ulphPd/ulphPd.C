@@ -32,7 +32,7 @@ Foam::meshless::couplings::ulphPd::ulphPd
     ghostCoupling(dict, scene),
     subSteps_
     (
-        "coupling ulphPd",
+        "coupling " + dict.get<word>("type"),
         dict.found("minSubSteps") ? readPositiveLabel(dict, "minSubSteps") : 1,
         "solid sub-steps per fluid step"
     )
@@ -44,7 +44,8 @@ Foam::meshless::couplings::ulphPd::ulphPd
     if (accType != "none" && accType != "step")
     {
         FatalIOErrorInFunction(dict)
-            << "coupling ulphPd: solidAcceleration " << accType
+            << "coupling " << dict.get<word>("type") << ": solidAcceleration "
+            << accType
             << ": expected none or step" << exit(FatalIOError);
     }
     const bool stepAcc = accType == "step";

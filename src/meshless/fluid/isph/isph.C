@@ -299,7 +299,7 @@ void Foam::meshless::bodyModels::isph::connectModel(particleScene&)
 void Foam::meshless::bodyModels::isph::boundaryAdded(boundary& b)
 {
     b.toGhosts->cache(neighbourRelation::kernelGradient);
-    if (wallUnknowns_)
+    if (wallUnknowns_ || b.ghosts->reaction())
     {
         b.fromGhosts->cache(neighbourRelation::kernelGradient);
     }
@@ -815,6 +815,7 @@ void Foam::meshless::bodyModels::isph::advanceDim
               : 0.0
             }
         );
+        interfaceForces<Dim>();
         const double* gp = gradP_.data();
         double* acc = acc_.data();
         const double c = dt/rho0_;
@@ -848,6 +849,41 @@ void Foam::meshless::bodyModels::isph::advanceDim
     }
     if (shifting_) shift<Dim>(dt, costs);
     releaseSplash();
+}
+
+
+template<int Dim>
+void Foam::meshless::bodyModels::isph::interfaceForces()
+{
+    const label n = p_.size();
+    vectorD<Dim> g;
+    for (int d = 0; d < Dim; ++d) g[d] = g_[d];
+    for (size_t k = 0; k < boundaries_.size(); ++k)
+    {
+        boundary& b = boundaries_[k];
+        double* R = b.ghosts->reaction();
+        if (!R) continue;
+        const isphEquations::sourceData& S = src_[k + 1];
+        const label nR = b.ghosts->ghostBody().particles().size()*Dim;
+        std::fill(R, R + nR, 0.0);
+        isphEquations::interfaceReaction<Dim>
+        (
+            *b.fromGhosts, S, b.ghosts->V(), p_.data(), V_.data(), g, rho0_,
+            R
+        );
+        interfaceForce_.resize(size_t(n)*Dim);
+        gather
+        (
+            *b.toGhosts, b.ghosts->V(),
+            isphEquations::interfaceForceTerm<Dim>
+            {
+                &S, p_.data(), V_.data(), g, rho0_, interfaceForce_.data()
+            }
+        );
+        const vectorD<Dim> F = sumInOrder<Dim>(interfaceForce_.data(), n);
+        b.forceOnFluid = Zero;
+        for (label d = 0; d < Dim; ++d) b.forceOnFluid[d] = F[d];
+    }
 }
 
 
