@@ -17,11 +17,11 @@ tutorial's Allrun):
   (postProcessing/coupling);
 - no water particle within 0.25 of the water's spacing of a flag or
   cylinder particle, none beyond the outlet, point A still within 1 mm
-  of its place (the flag has not started to swing);
-- the same resolution to 11 s: the flag swings (point A's y range over
-  the last 2 s above 80 mm peak to peak, 150 measured) at a frequency
-  within 10 % of the converged FEATFLOW value, 1.9306 Hz (1.81 Hz
-  measured, -6 %; the 15 s tutorial run gives 1.808 Hz).
+  of its place (the flag has not started to swing).
+The swing itself (15 s: amplitude and frequency against FEATFLOW's, in
+the tutorial's validation/result.md; validate.py --check applies the
+targets) is the tutorial's Allrun, about 6 minutes on 1 thread, not CI's;
+the stability suite runs the flag coarse to 2 s.
 """
 import math
 import os
@@ -91,28 +91,5 @@ def flag(t, work):
             % (END, moved), moved < 1e-3)
 
 
-def swing(t, work):
-    case, code, out = run_tutorial(t, TUTORIAL, work, "swing",
-                                   ("-end", "11"))
-    if code != 0:
-        return
-    tip = read_monitor(case, "tipA")
-    ts, ys = tip["time"], tip["dy"]
-    late = [(a, b) for a, b in zip(ts, ys) if a >= ts[-1] - 2]
-    span = max(b for _, b in late) - min(b for _, b in late)
-    mean = sum(b for _, b in late) / len(late)
-    up = [ts[k - 1] + (mean - ys[k - 1]) / (ys[k] - ys[k - 1])
-          * (ts[k] - ts[k - 1]) for k in range(1, len(ts))
-          if ts[k - 1] >= ts[-1] - 2 and ys[k - 1] < mean <= ys[k]]
-    t.check("the flag swings: y over the last 2 s spans %.1f mm > 80 mm"
-            % (1e3 * span), span > 0.08)
-    if len(up) < 2:
-        t.check("two upcrossings in the last 2 s", False, str(up))
-        return
-    f = (len(up) - 1) / (up[-1] - up[0])
-    t.check("frequency %.3f Hz within 10 %% of FEATFLOW's 1.9306 Hz (%+.1f"
-            " %%)" % (f, 100 * (f / 1.9306 - 1)), abs(f / 1.9306 - 1) < 0.1)
-
-
 if __name__ == "__main__":
-    sys.exit(run_parts("riemannTurekHron", flag, swing))
+    sys.exit(run_parts("riemannTurekHron", flag))

@@ -404,7 +404,9 @@ def invariants(case):
 INVARIANTS = ("reached", "finite", "particles", "depth", "energy", "splash")
 
 
-def main(argv, name="stability"):
+def main(argv, name="stability", after=None):
+    """The suite; after(work) (optional: more checks on the runs, before
+    the work folder goes) returns (passed, failed) to add to the count"""
     parser = argparse.ArgumentParser(prog="Allrun", add_help=False,
                                      allow_abbrev=False)
     parser.add_argument("-full", action="store_true")
@@ -462,6 +464,10 @@ def main(argv, name="stability"):
                                              inv[k][0])
                               for k in INVARIANTS)))
                 sys.stdout.flush()
+        if after is not None:
+            more = after(work)
+            passed += more[0]
+            failed += more[1]
     finally:
         if scratch and not keep:
             shutil.rmtree(work, ignore_errors=True)
