@@ -208,7 +208,7 @@ SCENES = [
               Method("Riemann WCSPH", "tutorials/riemannSphFoam/damBreak",
                      "-dx", (0.003, 0.002, 0.0015, 0.001)),
               Method("ISPH", "tutorials/isphTlsphFoam/damBreak", "-dx",
-                     (0.003, 0.002)),
+                     (0.003, 0.002, 0.0015, 0.001)),
           ], monitors={"accuracyCostSensor": DAM_BREAK_SENSOR},
           reported=("far-wall pressure, y = 0.2 H (p/(rho0 g H))",
                     dam_break_sensor, buchner_note)),
