@@ -56,4 +56,16 @@ Foam::scalar Foam::meshless::ghostCoupling::maxDeltaT
 }
 
 
+void Foam::meshless::ghostCoupling::describeBodies(Ostream& os) const
+{
+    os  << "    coupling " << type() << ": fluid " << fluidBody_->name()
+        << ", solids (";
+    forAll(solidBodies_, k)
+    {
+        os  << (k ? " " : "") << solidBodies_[k]->name();
+    }
+    os  << ")";
+}
+
+
 // ************************************************************************* //

@@ -42,13 +42,8 @@ Foam::meshless::couplings::isphTlsph::isphTlsph
 
 void Foam::meshless::couplings::isphTlsph::describe(Ostream& os) const
 {
-    os  << "    coupling isphTlsph: fluid " << fluidBody_->name()
-        << ", solids (";
-    forAll(solidBodies_, k)
-    {
-        os  << (k ? " " : "") << solidBodies_[k]->name();
-    }
-    os  << "), solid particles in the fluid's Poisson equation and"
+    describeBodies(os);
+    os  << ", solid particles in the fluid's Poisson equation and"
         << " projection, the pressure's exchange pair by pair, minSubSteps "
         << subSteps_.minSubSteps() << nl;
 }

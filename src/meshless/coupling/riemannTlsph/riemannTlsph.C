@@ -165,13 +165,8 @@ void Foam::meshless::couplings::riemannTlsph::advance
 
 void Foam::meshless::couplings::riemannTlsph::describe(Ostream& os) const
 {
-    os  << "    coupling riemannTlsph: fluid " << fluidBody_->name()
-        << ", solids (";
-    forAll(solidBodies_, k)
-    {
-        os  << (k ? " " : "") << solidBodies_[k]->name();
-    }
-    os  << "), solid particles as the fluid's dummy particles with the"
+    describeBodies(os);
+    os  << ", solid particles as the fluid's dummy particles with the"
         << " velocity and acceleration of the acoustic step, the reaction"
         << " of the fluid's pair forces on the solids, solid steps between"
         << " the halves of each acoustic step, minSubSteps "

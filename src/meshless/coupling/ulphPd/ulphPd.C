@@ -117,13 +117,8 @@ void Foam::meshless::couplings::ulphPd::advance
 
 void Foam::meshless::couplings::ulphPd::describe(Ostream& os) const
 {
-    os  << "    coupling ulphPd: fluid " << fluidBody_->name()
-        << ", solids (";
-    forAll(solidBodies_, k)
-    {
-        os  << (k ? " " : "") << solidBodies_[k]->name();
-    }
-    os  << "), solid particles as the fluid's ghosts, reaction of eq. 58 on"
+    describeBodies(os);
+    os  << ", solid particles as the fluid's ghosts, reaction of eq. 58 on"
         << " the solids, minSubSteps " << subSteps_.minSubSteps() << nl;
 }
 
