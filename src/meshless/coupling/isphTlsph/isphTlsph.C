@@ -5,6 +5,7 @@
 #include "isphTlsph.H"
 #include "fluidModel.H"
 #include "particleBody.H"
+#include "solidModel.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -37,6 +38,166 @@ Foam::meshless::couplings::isphTlsph::isphTlsph
             << " (isph), or coupling riemannTlsph (riemannWcsph) or ulphPd"
             << exit(FatalIOError);
     }
+    if (dict.found("iterations"))
+    {
+        iterations_.reset
+        (
+            new interfaceQuasiNewton(dict.subDict("iterations"))
+        );
+        solidStates_.resize(solidBodies_.size());
+        for (const particleBody* sb : solidBodies_)
+        {
+            if (!sb->model().stateInFields())
+            {
+                FatalIOErrorInFunction(dict)
+                    << "coupling isphTlsph: iterations: solid " << sb->name()
+                    << " has model " << sb->dict().get<word>("model")
+                    << ", whose state is not all in its fields (it cannot"
+                    << " be set back to a step's start): expected a solid"
+                    << " such as tlsph, or no 'iterations' (staggered)"
+                    << exit(FatalIOError);
+            }
+        }
+    }
+}
+
+
+Foam::meshless::couplings::isphTlsph::~isphTlsph()
+{
+    if (!iterations_) return;
+    Info<< "coupling isphTlsph: " << iterations_->meanIterations()
+        << " iterations per step on average, at most "
+        << iterations_->mostIterations() << ", "
+        << iterations_->unconvergedSteps() << " steps stopped at"
+        << " maxIterations " << iterations_->maxIterations() << endl;
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::meshless::couplings::isphTlsph::stepSolidsUnder
+(
+    const std::vector<double>& x,
+    const scalar t,
+    const scalar dt,
+    const label n,
+    costAccounting& costs
+)
+{
+    size_t offset = 0;
+    forAll(solidBodies_, k)
+    {
+        solidStates_[k].restore();
+        solidBodies_[k]->model().restored();
+        particleField& fExt = solidBodies_[k]->model().solid()->externalForce();
+        const size_t m = size_t(fExt.size())*fExt.nComponents();
+        std::copy(x.begin() + offset, x.begin() + offset + m, fExt.data());
+        offset += m;
+    }
+    stepSolids(solidBodies_, t, dt, n, costs);
+    forAll(solidBodies_, k)
+    {
+        const particleField& U = solidBodies_[k]->particles().field("U");
+        const std::vector<double>& U0 = U0_[k];
+        double* a = stepAcceleration_[k]->data();
+        for (size_t c = 0; c < U0.size(); ++c)
+        {
+            a[c] = (U.data()[c] - U0[c])/dt;
+        }
+    }
+}
+
+
+void Foam::meshless::couplings::isphTlsph::gatherReactions
+(
+    std::vector<double>& x
+) const
+{
+    size_t offset = 0;
+    forAll(solidBodies_, k)
+    {
+        const label m =
+            solidBodies_[k]->particles().size()*solidBodies_[k]->dim();
+        const double* R = ghosts_[k]->reaction();
+        std::copy(R, R + m, x.begin() + offset);
+        offset += m;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::meshless::couplings::isphTlsph::advance
+(
+    const scalar t,
+    const scalar dt,
+    costAccounting& costs
+)
+{
+    if (!iterations_)
+    {
+        ulphPd::advance(t, dt, costs);
+        return;
+    }
+
+    // The state at t, and x^0: the fluid's force of the last step
+    fluidState_.save(fluidBody_->particles());
+    size_t nx = 0;
+    forAll(solidBodies_, k)
+    {
+        particleBody& sb = *solidBodies_[k];
+        solidStates_[k].save(sb.particles());
+        const particleField& U = sb.particles().field("U");
+        std::copy(U.data(), U.data() + U0_[k].size(), U0_[k].begin());
+        nx += size_t(sb.particles().size())*sb.dim();
+    }
+    x_.resize(nx);
+    xt_.resize(nx);
+    {
+        size_t offset = 0;
+        for (particleBody* sbp : solidBodies_)
+        {
+            const particleField& fExt = sbp->model().solid()->externalForce();
+            const size_t m = size_t(fExt.size())*fExt.nComponents();
+            std::copy(fExt.data(), fExt.data() + m, x_.begin() + offset);
+            offset += m;
+        }
+    }
+    const label nSub = solidSteps(solidBodies_, dt, subSteps_);
+
+    // x~ = H(x^k): the solids under x^k, the fluid against them at t + dt
+    iterations_->beginStep();
+    for (label k = 0; ; ++k)
+    {
+        stepSolidsUnder(x_, t, dt, nSub, costs);
+        if (k > 0) fluidState_.restore();
+        fluidBody_->model().restored();
+        for (auto& g : ghosts_) g->update();
+        fluidBody_->advance(t, dt, costs);
+        gatherReactions(xt_);
+        const bool done = iterations_->update(x_, xt_, k);
+        if (debug)
+        {
+            Info<< "      coupling isphTlsph: iteration " << k + 1
+                << ", residual " << iterations_->residual() << endl;
+        }
+        if (done) break;
+    }
+    iterations_->endStep();
+    Info<< "    coupling isphTlsph: " << iterations_->iterations()
+        << " iterations, residual " << iterations_->residual();
+    if (iterations_->residual() > iterations_->tolerance())
+    {
+        Info<< ", not converged (maxIterations "
+            << iterations_->maxIterations() << ")";
+    }
+    Info<< endl;
+
+    // The solids take the force the fluid felt: momentum balances to
+    // round-off, the solids' motion differs from the one the fluid saw by
+    // the iteration's residual
+    stepSolidsUnder(xt_, t, dt, nSub, costs);
+    writeForces(t + dt, nSub, solidBodies_, *fluid_, boundaries_);
 }
 
 

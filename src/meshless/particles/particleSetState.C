@@ -1,0 +1,47 @@
+/*---------------------------------------------------------------------------*\
+  meshlessFoam: meshless fluid-structure interaction inside OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "particleSetState.H"
+#include "error.H"
+#include <algorithm>
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::meshless::particleSetState::save(particleSet& set)
+{
+    set_ = &set;
+    const wordList names(set.fieldNames());
+    fields_.resize(names.size());
+    data_.resize(names.size());
+    forAll(names, k)
+    {
+        particleField& f = set.field(names[k]);
+        fields_[k] = &f;
+        const size_t n = size_t(f.size())*f.nComponents();
+        data_[k].resize(n);
+        std::copy(f.data(), f.data() + n, data_[k].begin());
+    }
+    ids_ = set.ids();
+}
+
+
+void Foam::meshless::particleSetState::restore()
+{
+    if (!set_) return;
+    if (set_->ids() != ids_)
+    {
+        FatalErrorInFunction
+            << "Particles of " << set_->name() << " changed since their state"
+            << " was saved (" << ids_.size() << " then, " << set_->size()
+            << " now, or reordered): the state cannot be set back"
+            << exit(FatalError);
+    }
+    forAll(fields_, k)
+    {
+        std::copy(data_[k].begin(), data_[k].end(), fields_[k]->data());
+    }
+}
+
+
+// ************************************************************************* //
