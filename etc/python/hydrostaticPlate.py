@@ -38,6 +38,7 @@ import sys
 from foamCloud import read_cloud, times
 from foamDict import dictionary_entry
 from foamMonitor import (arguments, cost_figures, load_runs, monitor_rows,
+                         run_cost,
                          pyplot, read_monitor, save_run)
 from fsiChecks import energy_total
 
@@ -120,14 +121,32 @@ def analyse(case):
     checks = stability(case, c)
     run = {
         "n": n, "deflection": w, "window": t0, "endTime": ts[-1],
-        "swing": max(dy) - min(dy[k] for k in range(len(ts))
-                                if ts[k] >= t0),
+        "swing": (max(dy[k] for k in range(len(ts)) if ts[k] >= t0)
+                  - min(dy[k] for k in range(len(ts)) if ts[k] >= t0)),
         "force": f, "weight": c["rho"] * G * H * L,
         "kirchhoff": wb, "reference": ws,
         "stable": int(all(ok for _, ok in checks)),
     }
     run.update(cost_figures(case))
+    run.update(cost_shares(case))
     return run, checks
+
+
+def cost_shares(case):
+    """Shares of the wall time [%]: the water's model (all of its step),
+    its pressure solve (a projection fluid's; nan for others) and the
+    plate's model"""
+    cost = run_cost(case)
+    parts, bodies = cost["parts"], cost["bodies"]
+
+    def share(name):
+        part = parts.get(name)
+        return 100 * float(part["share"]) if part else float("nan")
+    return {
+        "fluidShare": share("water." + bodies["water"]["model"]),
+        "solveShare": share("water.pressureSolve"),
+        "plateShare": share("plate." + bodies["plate"]["model"]),
+    }
 
 
 def write_table(here, runs, tutorial):
@@ -157,18 +176,25 @@ def write_table(here, runs, tutorial):
         "| T/dx_s | water particles per plate particle spacing | window | "
         "mean deflection | vs shear | vs Kirchhoff | swing | force on "
         "plate / rho g H L | stable | particles | steps | wall time | "
-        "threads |",
-        "|---|---|---|---|---|---|---|---|---|---|---|---|---|",
+        "threads | water / its pressure solve / plate [% of the wall "
+        "time] |",
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|",
     ]
+
+    def pct(r, key):
+        v = r.get(key)
+        return "-" if v is None or v != v else "%.0f" % v
     for r in runs:
         lines.append(
             "| %d | 2 | %g-%g s | %.4g m | %+.2f %% | %+.2f %% | %.2g m | "
-            "%.4f | %s | %d | %d | %.0f s | %d |"
+            "%.4f | %s | %d | %d | %.0f s | %d | %s / %s / %s |"
             % (r["n"], r["window"], r["endTime"], r["deflection"],
                100 * (r["deflection"] / r["reference"] - 1),
                100 * (r["deflection"] / r["kirchhoff"] - 1), r["swing"],
                r["force"] / r["weight"], "yes" if r["stable"] else "NO",
-               r["particles"], r["steps"], r["wall"], r["threads"]))
+               r["particles"], r["steps"], r["wall"], r["threads"],
+               pct(r, "fluidShare"), pct(r, "solveShare"),
+               pct(r, "plateShare")))
     lines += ["", "Plots: deflection.png, energy.png (the finest run).", ""]
     with open(os.path.join(here, "result.md"), "w") as f:
         f.write("\n".join(lines))
