@@ -228,6 +228,9 @@ SCENES = [
               Method("Riemann WCSPH + TLSPH",
                      "tutorials/riemannSphFoam/hydrostaticPlate", "-n",
                      (4, 6, 8), lambda n: 0.05 / n),
+              Method("ISPH + TLSPH",
+                     "tutorials/isphTlsphFoam/hydrostaticPlate", "-n",
+                     (4, 6, 8), lambda n: 0.05 / n),
           ]),
     Scene("oscillatingPlate", "Oscillating plate (Gray et al. 2001), the"
           " tutorial's 3 periods",
