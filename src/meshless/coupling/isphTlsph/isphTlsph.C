@@ -95,16 +95,7 @@ void Foam::meshless::couplings::isphTlsph::stepSolidsUnder
         offset += m;
     }
     stepSolids(solidBodies_, t, dt, n, costs);
-    forAll(solidBodies_, k)
-    {
-        const particleField& U = solidBodies_[k]->particles().field("U");
-        const std::vector<double>& U0 = U0_[k];
-        double* a = stepAcceleration_[k]->data();
-        for (size_t c = 0; c < U0.size(); ++c)
-        {
-            a[c] = (U.data()[c] - U0[c])/dt;
-        }
-    }
+    storeStepAccelerations(dt);
 }
 
 

@@ -73,6 +73,24 @@ Foam::meshless::couplings::ulphPd::ulphPd
 }
 
 
+void Foam::meshless::couplings::ulphPd::storeStepAccelerations
+(
+    const scalar dt
+)
+{
+    forAll(solidBodies_, k)
+    {
+        const particleField& U = solidBodies_[k]->particles().field("U");
+        const std::vector<double>& U0 = U0_[k];
+        double* a = stepAcceleration_[k]->data();
+        for (size_t c = 0; c < U0.size(); ++c)
+        {
+            a[c] = (U.data()[c] - U0[c])/dt;
+        }
+    }
+}
+
+
 void Foam::meshless::couplings::ulphPd::advance
 (
     const scalar t,
@@ -101,16 +119,7 @@ void Foam::meshless::couplings::ulphPd::advance
         std::copy(U.data(), U.data() + U0.size(), U0.begin());
     }
     stepSolids(solidBodies_, t, dt, nSub, costs);
-    forAll(solidBodies_, k)
-    {
-        const particleField& U = solidBodies_[k]->particles().field("U");
-        const std::vector<double>& U0 = U0_[k];
-        double* a = stepAcceleration_[k]->data();
-        for (size_t c = 0; c < U0.size(); ++c)
-        {
-            a[c] = (U.data()[c] - U0[c])/dt;
-        }
-    }
+    storeStepAccelerations(dt);
     writeForces(t + dt, nSub, solidBodies_, *fluid_, boundaries_);
 }
 
