@@ -43,12 +43,14 @@ Foam::meshless::interfaceQuasiNewton::interfaceQuasiNewton
     (
         dict.found("filter") ? readInOpenRange(dict, "filter", 0, 1) : 1e-3
     ),
+    bestNorm_(GREAT),
     iterations_(0),
     residual_(0),
     steps_(0),
     totalIterations_(0),
     unconverged_(0),
-    most_(0)
+    most_(0),
+    restarts_(0)
 {}
 
 
@@ -141,6 +143,8 @@ void Foam::meshless::interfaceQuasiNewton::beginStep()
     current_.dXt.clear();
     iterations_ = 0;
     residual_ = 0;
+    bestNorm_ = GREAT;
+    rLast_.clear();
 }
 
 
@@ -166,6 +170,25 @@ bool Foam::meshless::interfaceQuasiNewton::update
         most_ = std::max(most_, iterations_);
         if (rNorm > tolerance_*xtNorm) ++unconverged_;
         return true;
+    }
+
+    if (rNorm < bestNorm_)
+    {
+        bestNorm_ = rNorm;
+        xBest_ = x;
+        rBest_ = r_;
+    }
+    else if (rNorm > restartFactor*bestNorm_)
+    {
+        current_ = columns();
+        past_.clear();
+        rLast_.clear();
+        ++restarts_;
+        for (size_t i = 0; i < n; ++i)
+        {
+            x[i] = xBest_[i] + initialRelaxation_*rBest_[i];
+        }
+        return false;
     }
 
     // The new columns: differences with the last iteration of this step

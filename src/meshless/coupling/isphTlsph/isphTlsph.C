@@ -69,7 +69,8 @@ Foam::meshless::couplings::isphTlsph::~isphTlsph()
         << " iterations per step on average, at most "
         << iterations_->mostIterations() << ", "
         << iterations_->unconvergedSteps() << " steps stopped at"
-        << " maxIterations " << iterations_->maxIterations() << endl;
+        << " maxIterations " << iterations_->maxIterations() << ", "
+        << iterations_->restarts() << " restarts" << endl;
 }
 
 
