@@ -111,8 +111,7 @@ label solveStep
     return iqn.iterations();
 }
 
-//- max_i |x_i - x*_i| / max_i |x*_i| with x* = (I - A)^-1 b by the plain
-//  residual of the fixed point: |H(x) - x| relative to |x|
+//- The fixed point's residual max_i |H(x)_i - x_i| relative to max_i |x_i|
 double fixedPointError
 (
     const linearMap& H,
@@ -246,6 +245,31 @@ TEST(interfaceQuasiNewton, restartsWhereTheResponseSwitches)
 }
 
 
+TEST(interfaceQuasiNewton, aRelaxedStepThatGrowsTheResidualIsNoRestart)
+{
+    // An added-mass ratio of 200: the first, relaxed step (0.1) grows the
+    // residual 19 times; the secants that follow converge, no restart
+    const label n = 12;
+    std::vector<double> lambda = addedMassSpectrum(n);
+    lambda[0] = -200;
+    const linearMap H(lambda, 9);
+    std::vector<double> b(n, 1.0);
+    interfaceQuasiNewton iqn
+    (
+        meshlessTest::dictFrom
+        (
+            "maxIterations 50; tolerance 1e-10; initialRelaxation 0.1;"
+            " reuse 0;"
+        )
+    );
+    std::vector<double> x(n, 0.0);
+    EXPECT_LE(solveStep(iqn, H, b, x), n + 2);
+    EXPECT_EQ(iqn.restarts(), 0);
+    EXPECT_EQ(iqn.unconvergedSteps(), 0);
+    EXPECT_LT(fixedPointError(H, b, x), 1e-8);
+}
+
+
 TEST(interfaceQuasiNewton, stopsAtMaxIterationsAndCountsIt)
 {
     const label n = 12;
@@ -325,6 +349,15 @@ TEST(particleSetState, restoresEveryFieldExactly)
         EXPECT_EQ(U(i, 0), 0.0);
         EXPECT_EQ(an(i, 0), 3.0 + i);
     }
+
+    // A field left out of the save keeps its value
+    particleSetState partial;
+    partial.save(s, {&an});
+    an.data()[0] = 42;
+    U.data()[0] = 42;
+    partial.restore();
+    EXPECT_EQ(an(0, 0), 42.0);
+    EXPECT_EQ(U(0, 0), 0.0);
 
     // Other particles: refused, naming the set
     s.resize(6);

@@ -8,19 +8,25 @@
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::meshless::particleSetState::save(particleSet& set)
+void Foam::meshless::particleSetState::save
+(
+    particleSet& set,
+    const std::vector<const particleField*>& skip
+)
 {
     set_ = &set;
     const wordList names(set.fieldNames());
-    fields_.resize(names.size());
+    fields_.clear();
     data_.resize(names.size());
     forAll(names, k)
     {
         particleField& f = set.field(names[k]);
-        fields_[k] = &f;
+        if (std::find(skip.begin(), skip.end(), &f) != skip.end()) continue;
         const size_t n = size_t(f.size())*f.nComponents();
-        data_[k].resize(n);
-        std::copy(f.data(), f.data() + n, data_[k].begin());
+        std::vector<double>& d = data_[fields_.size()];
+        d.resize(n);
+        std::copy(f.data(), f.data() + n, d.begin());
+        fields_.push_back(&f);
     }
     ids_ = set.ids();
 }

@@ -177,6 +177,22 @@ const double* Foam::meshless::ghostBoundary::summationOffsets()
 }
 
 
+std::vector<const Foam::meshless::particleField*>
+Foam::meshless::ghostBoundary::ownFields() const
+{
+    std::vector<const particleField*> f{&p_, &Uvisc_, &S_};
+    // rho and m are the ghosts' own where scratch (a solid's), the body's
+    // where written (a wall's)
+    if (!rho_.written()) f.push_back(&rho_);
+    if (!mass_.written()) f.push_back(&mass_);
+    for (const particleField* q : {reaction_, cell_, cellOffset_})
+    {
+        if (q) f.push_back(q);
+    }
+    return f;
+}
+
+
 void Foam::meshless::ghostBoundary::requestReaction()
 {
     if (!reaction_)

@@ -43,6 +43,7 @@ Foam::meshless::interfaceQuasiNewton::interfaceQuasiNewton
     (
         dict.found("filter") ? readInOpenRange(dict, "filter", 0, 1) : 1e-3
     ),
+    lastSecant_(false),
     bestNorm_(GREAT),
     iterations_(0),
     residual_(0),
@@ -144,6 +145,7 @@ void Foam::meshless::interfaceQuasiNewton::beginStep()
     iterations_ = 0;
     residual_ = 0;
     bestNorm_ = GREAT;
+    lastSecant_ = false;
     rLast_.clear();
 }
 
@@ -163,12 +165,16 @@ bool Foam::meshless::interfaceQuasiNewton::update
     const double rNorm = std::sqrt(vecDot(r_, r_));
     const double xtNorm = std::sqrt(vecDot(xt, xt));
     residual_ = xtNorm > 0 ? rNorm/xtNorm : (rNorm > 0 ? GREAT : 0);
-    if (rNorm <= tolerance_*xtNorm || iterations_ >= maxIterations_)
+    if
+    (
+        rNorm <= tolerance_*xtNorm || iterations_ >= maxIterations_
+     || !std::isfinite(rNorm)
+    )
     {
         ++steps_;
         totalIterations_ += iterations_;
         most_ = std::max(most_, iterations_);
-        if (rNorm > tolerance_*xtNorm) ++unconverged_;
+        if (!(rNorm <= tolerance_*xtNorm)) ++unconverged_;
         return true;
     }
 
@@ -178,7 +184,7 @@ bool Foam::meshless::interfaceQuasiNewton::update
         xBest_ = x;
         rBest_ = r_;
     }
-    else if (rNorm > restartFactor*bestNorm_)
+    else if (lastSecant_ && rNorm > restartFactor*bestNorm_)
     {
         current_ = columns();
         past_.clear();
@@ -188,6 +194,7 @@ bool Foam::meshless::interfaceQuasiNewton::update
         {
             x[i] = xBest_[i] + initialRelaxation_*rBest_[i];
         }
+        lastSecant_ = false;
         return false;
     }
 
@@ -206,7 +213,8 @@ bool Foam::meshless::interfaceQuasiNewton::update
     rLast_ = r_;
     xtLast_ = xt;
 
-    if (!leastSquaresUpdate(x, xt))
+    lastSecant_ = leastSquaresUpdate(x, xt);
+    if (!lastSecant_)
     {
         for (size_t i = 0; i < n; ++i) x[i] += initialRelaxation_*r_[i];
     }

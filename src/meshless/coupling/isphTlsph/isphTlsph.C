@@ -134,11 +134,15 @@ void Foam::meshless::couplings::isphTlsph::advance
 
     // The state at t, and x^0: the fluid's force of the last step
     fluidState_.save(fluidBody_->particles());
+    fluidBody_->model().stateSaved();
     size_t nx = 0;
     forAll(solidBodies_, k)
     {
+        // The fluid's fields on the solid (its pressure, the reaction) are
+        // not the solid's state
         particleBody& sb = *solidBodies_[k];
-        solidStates_[k].save(sb.particles());
+        solidStates_[k].save(sb.particles(), ghosts_[k]->ownFields());
+        sb.model().stateSaved();
         const particleField& U = sb.particles().field("U");
         std::copy(U.data(), U.data() + U0_[k].size(), U0_[k].begin());
         nx += size_t(sb.particles().size())*sb.dim();

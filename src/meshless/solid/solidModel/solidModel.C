@@ -56,6 +56,7 @@ Foam::meshless::solidModel::solidModel
     ),
     maxCo_(0.3),
     accValid_(false),
+    accValidSaved_(false),
     beta_(0.25),
     gamma_(0.5),
     alphaM_(0),
