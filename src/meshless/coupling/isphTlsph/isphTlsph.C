@@ -143,10 +143,9 @@ void Foam::meshless::couplings::isphTlsph::advance
         particleBody& sb = *solidBodies_[k];
         solidStates_[k].save(sb.particles(), ghosts_[k]->ownFields());
         sb.model().stateSaved();
-        const particleField& U = sb.particles().field("U");
-        std::copy(U.data(), U.data() + U0_[k].size(), U0_[k].begin());
         nx += size_t(sb.particles().size())*sb.dim();
     }
+    storeStepStartVelocities();
     x_.resize(nx);
     xt_.resize(nx);
     {

@@ -73,6 +73,17 @@ Foam::meshless::couplings::ulphPd::ulphPd
 }
 
 
+void Foam::meshless::couplings::ulphPd::storeStepStartVelocities()
+{
+    forAll(solidBodies_, k)
+    {
+        const particleField& U = solidBodies_[k]->particles().field("U");
+        std::vector<double>& U0 = U0_[k];
+        std::copy(U.data(), U.data() + U0.size(), U0.begin());
+    }
+}
+
+
 void Foam::meshless::couplings::ulphPd::storeStepAccelerations
 (
     const scalar dt
@@ -112,12 +123,7 @@ void Foam::meshless::couplings::ulphPd::advance
     }
     const label nSub = solidSteps(solidBodies_, dt, subSteps_);
 
-    forAll(solidBodies_, k)
-    {
-        const particleField& U = solidBodies_[k]->particles().field("U");
-        std::vector<double>& U0 = U0_[k];
-        std::copy(U.data(), U.data() + U0.size(), U0.begin());
-    }
+    storeStepStartVelocities();
     stepSolids(solidBodies_, t, dt, nSub, costs);
     storeStepAccelerations(dt);
     writeForces(t + dt, nSub, solidBodies_, *fluid_, boundaries_);
