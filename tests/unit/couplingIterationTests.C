@@ -286,6 +286,43 @@ TEST(interfaceQuasiNewton, stopsAtMaxIterationsAndCountsIt)
 }
 
 
+TEST(interfaceQuasiNewton, aStepAtMaxIterationsEndsAtItsLeastIterate)
+{
+    // Responses prescribed iteration by iteration: the first is the least
+    // (|r|/|x~| = 0.1/1.1), the second's residual is 5 times its x~
+    interfaceQuasiNewton iqn
+    (
+        meshlessTest::dictFrom("maxIterations 2; tolerance 1e-6; reuse 0;")
+    );
+    iqn.beginStep();
+    std::vector<double> x{1, 0};
+    ASSERT_FALSE(iqn.update(x, {1.1, 0}, 0));
+    const std::vector<double> x1(x);
+    EXPECT_NE(x1[0], 1.0);
+    ASSERT_TRUE(iqn.update(x, {x1[0] + 5, 1}, 1));
+    EXPECT_EQ(x, x1);                       // unchanged at maxIterations
+    ASSERT_TRUE(iqn.leastIterate(x));
+    EXPECT_EQ(x, (std::vector<double>{1, 0}));
+    EXPECT_EQ(iqn.leastIteration(), 1);
+    EXPECT_NEAR(iqn.leastResidual(), 0.1/1.1, 1e-14);
+    EXPECT_EQ(iqn.iterations(), 3);         // the extra evaluation counted
+    iqn.endStep();
+    EXPECT_EQ(iqn.unconvergedSteps(), 1);
+    EXPECT_EQ(iqn.mostIterations(), 3);
+
+    // The last iterate the least: nothing to go back to
+    iqn.beginStep();
+    std::vector<double> y{1, 0};
+    ASSERT_FALSE(iqn.update(y, {3, 0}, 0));
+    ASSERT_TRUE(iqn.update(y, {y[0] + 1e-3, 0}, 1));
+    const std::vector<double> y1(y);
+    EXPECT_FALSE(iqn.leastIterate(y));
+    EXPECT_EQ(y, y1);
+    EXPECT_EQ(iqn.iterations(), 2);
+    iqn.endStep();
+}
+
+
 TEST(interfaceQuasiNewton, badInputNamesTheKeyword)
 {
     const std::string tol = meshlessTest::fatalMessage([]

@@ -22,7 +22,9 @@ Foam::meshless::deformingGhost::deformingGhost
     (
         body.particles().addScratchField("ghostMown", particleField::kind::tensor)
     ),
-    own_(nullptr)
+    own_(nullptr),
+    contactN_(nullptr),
+    contactDepth_(nullptr)
 {}
 
 
@@ -41,6 +43,27 @@ void Foam::meshless::deformingGhost::update()
 {
     if (!own_) return;
     computeOwnShapeTensors(*own_, Mown_);
+    if (contactN_)
+    {
+        const particleSet& set = ghostBody().particles();
+        const particleField& N = set.field("normal");
+        const label n = N.size()*N.nComponents();
+        const double* Nd = N.data();
+        double* c = contactN_->data();
+        for (label k = 0; k < n; ++k) c[k] = -Nd[k];
+    }
+}
+
+
+void Foam::meshless::deformingGhost::enableContact()
+{
+    if (contactN_) return;
+    particleSet& set = ghostBody().particles();
+    contactN_ =
+        &set.addScratchField("ghostContactNormal", particleField::kind::vector);
+    contactDepth_ =
+        &set.addScratchField("ghostContactDepth", particleField::kind::scalar);
+    contactDepth_->fill(0.5*ghostBody().spacing());
 }
 
 

@@ -383,4 +383,11 @@ void Foam::meshless::ghostBoundary::interpolate
 }
 
 
+const double* Foam::meshless::ghostBoundary::contactDepth() const
+{
+    const particleSet& set = ghostBody_.particles();
+    return set.found("wallDistance") ? set.field("wallDistance").data() : nullptr;
+}
+
+
 // ************************************************************************* //

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "ghostCoupling.H"
+#include "solidModel.H"
 #include "particleScene.H"
 #include "fluidModel.H"
 
@@ -32,6 +33,17 @@ Foam::meshless::deformingGhost& Foam::meshless::ghostCoupling::addGhosts
     fluid_->addBoundary(g);
     boundaries_.append(&g);
     return g;
+}
+
+
+void Foam::meshless::ghostCoupling::updateGhosts()
+{
+    forAll(solidBodies_, k)
+    {
+        deformingGhost& g = *ghosts_[k];
+        if (g.contact()) solidBodies_[k]->model().solid()->normals();
+        g.update();
+    }
 }
 
 

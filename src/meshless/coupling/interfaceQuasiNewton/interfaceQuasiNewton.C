@@ -45,6 +45,8 @@ Foam::meshless::interfaceQuasiNewton::interfaceQuasiNewton
     ),
     lastSecant_(false),
     bestNorm_(GREAT),
+    leastResidual_(GREAT),
+    leastIteration_(0),
     iterations_(0),
     residual_(0),
     steps_(0),
@@ -145,6 +147,8 @@ void Foam::meshless::interfaceQuasiNewton::beginStep()
     iterations_ = 0;
     residual_ = 0;
     bestNorm_ = GREAT;
+    leastResidual_ = GREAT;
+    leastIteration_ = 0;
     lastSecant_ = false;
     rLast_.clear();
 }
@@ -165,6 +169,12 @@ bool Foam::meshless::interfaceQuasiNewton::update
     const double rNorm = std::sqrt(vecDot(r_, r_));
     const double xtNorm = std::sqrt(vecDot(xt, xt));
     residual_ = xtNorm > 0 ? rNorm/xtNorm : (rNorm > 0 ? GREAT : 0);
+    if (std::isfinite(rNorm) && residual_ < leastResidual_)
+    {
+        leastResidual_ = residual_;
+        leastIteration_ = iterations_;
+        xLeast_ = x;
+    }
     if
     (
         rNorm <= tolerance_*xtNorm || iterations_ >= maxIterations_
@@ -219,6 +229,27 @@ bool Foam::meshless::interfaceQuasiNewton::update
         for (size_t i = 0; i < n; ++i) x[i] += initialRelaxation_*r_[i];
     }
     return false;
+}
+
+
+bool Foam::meshless::interfaceQuasiNewton::leastIterate
+(
+    std::vector<double>& x
+)
+{
+    if
+    (
+        leastIteration_ == 0 || leastIteration_ == iterations_
+     || xLeast_.size() != x.size()
+    )
+    {
+        return false;
+    }
+    x = xLeast_;
+    ++iterations_;
+    ++totalIterations_;
+    most_ = std::max(most_, iterations_);
+    return true;
 }
 
 

@@ -38,6 +38,9 @@ Foam::meshless::couplings::isphTlsph::isphTlsph
             << " (isph), or coupling riemannTlsph (riemannWcsph) or ulphPd"
             << exit(FatalIOError);
     }
+    // A free-surface particle does not run into a structure (the fluid's
+    // wallContact)
+    for (auto& g : ghosts_) g->enableContact();
     if (dict.found("iterations"))
     {
         iterations_.reset
@@ -97,6 +100,24 @@ void Foam::meshless::couplings::isphTlsph::stepSolidsUnder
     }
     stepSolids(solidBodies_, t, dt, n, costs);
     storeStepAccelerations(dt);
+}
+
+
+void Foam::meshless::couplings::isphTlsph::evaluate
+(
+    const scalar t,
+    const scalar dt,
+    const label n,
+    costAccounting& costs,
+    const bool restore
+)
+{
+    stepSolidsUnder(x_, t, dt, n, costs);
+    if (restore) fluidState_.restore();
+    fluidBody_->model().restored();
+    updateGhosts();
+    fluidBody_->advance(t, dt, costs);
+    gatherReactions(xt_);
 }
 
 
@@ -164,12 +185,7 @@ void Foam::meshless::couplings::isphTlsph::advance
     iterations_->beginStep();
     for (label k = 0; ; ++k)
     {
-        stepSolidsUnder(x_, t, dt, nSub, costs);
-        if (k > 0) fluidState_.restore();
-        fluidBody_->model().restored();
-        for (auto& g : ghosts_) g->update();
-        fluidBody_->advance(t, dt, costs);
-        gatherReactions(xt_);
+        evaluate(t, dt, nSub, costs, k > 0);
         const bool done = iterations_->update(x_, xt_, k);
         if (debug)
         {
@@ -178,13 +194,27 @@ void Foam::meshless::couplings::isphTlsph::advance
         }
         if (done) break;
     }
+    const bool converged =
+        iterations_->residual() <= iterations_->tolerance();
+    const scalar lastResidual = iterations_->residual();
+    const bool least = !converged && iterations_->leastIterate(x_);
+    if (least)
+    {
+        // Not converged: the step ends at its least iterate, not its last
+        evaluate(t, dt, nSub, costs);
+    }
     iterations_->endStep();
     Info<< "    coupling isphTlsph: " << iterations_->iterations()
-        << " iterations, residual " << iterations_->residual();
-    if (iterations_->residual() > iterations_->tolerance())
+        << " iterations, residual " << lastResidual;
+    if (!converged)
     {
         Info<< ", not converged (maxIterations "
             << iterations_->maxIterations() << ")";
+        if (least)
+        {
+            Info<< ", ended at iteration " << iterations_->leastIteration()
+                << " (residual " << iterations_->leastResidual() << ")";
+        }
     }
     Info<< endl;
 

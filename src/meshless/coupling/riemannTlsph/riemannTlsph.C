@@ -29,12 +29,6 @@ Foam::meshless::couplings::riemannTlsph::riemannTlsph
 )
 :
     ghostCoupling(dict, scene),
-    subSteps_
-    (
-        "coupling riemannTlsph",
-        dict.found("minSubSteps") ? readPositiveLabel(dict, "minSubSteps") : 1,
-        "solid steps per acoustic step"
-    ),
     wallAcceleration_
     (
         readEnumOrDefault
@@ -50,6 +44,12 @@ Foam::meshless::couplings::riemannTlsph::riemannTlsph
             dict, "densitySummation",
             Enum<bool>({{true, "cells"}, {false, "particles"}}), true
         )
+    ),
+    subSteps_
+    (
+        "coupling riemannTlsph",
+        dict.found("minSubSteps") ? readPositiveLabel(dict, "minSubSteps") : 1,
+        "solid steps per acoustic step"
     ),
     stepMost_(0),
     costs_(nullptr)

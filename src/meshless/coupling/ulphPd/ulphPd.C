@@ -110,7 +110,7 @@ void Foam::meshless::couplings::ulphPd::advance
 )
 {
     // Fluid over [t, t + dt] against the solids at t
-    for (auto& g : ghosts_) g->update();
+    updateGhosts();
     fluidBody_->advance(t, dt, costs);
 
     // Solids over the same interval, with the fluid's force of the

@@ -338,7 +338,7 @@ void Foam::meshless::bodyModels::isph::setSources()
     viscSrc_[0] = riemannEquations::sourceData
     {
         true, p_.data(), B_.data(), U_.data(), nullptr, nullptr, true,
-        false, nullptr
+        false, nullptr, nullptr
     };
     for (size_t k = 0; k < boundaries_.size(); ++k)
     {
@@ -357,7 +357,7 @@ void Foam::meshless::bodyModels::isph::setSources()
         viscSrc_[k + 1] = riemannEquations::sourceData
         {
             false, nullptr, nullptr, g.U(), g.accelerations(), g.normals(),
-            g.slipNormals() == nullptr, false, nullptr
+            g.slipNormals() == nullptr, false, nullptr, nullptr
         };
     }
 }
@@ -387,7 +387,8 @@ void Foam::meshless::bodyModels::isph::shift
         shiftTerm<Dim>
         {
             src_.data(), U_.data(), B_.data(), body_.kernel().radius(),
-            shiftR_.data(), gradPsi_.data(), gradU_.data()
+            std::pow(body_.spacing(), Dim), shiftR_.data(), gradPsi_.data(),
+            gradU_.data()
         }
     );
     gather
@@ -829,13 +830,12 @@ void Foam::meshless::bodyModels::isph::advanceDim
             const scalar reach = contactReach_*body_.spacing();
             for (const boundary& b : boundaries_)
             {
-                ghostBoundary& g = *b.ghosts;
-                const particleSet& gs = g.ghostBody().particles();
-                if (!g.normals() || !gs.found("wallDistance")) continue;
+                const ghostBoundary& g = *b.ghosts;
+                if (!g.contactNormals() || !g.contactDepth()) continue;
                 isphEquations::wallContact<Dim>
                 (
-                    *b.toGhosts, g.normals(),
-                    gs.field("wallDistance").data(), g.U(), reach,
+                    *b.toGhosts, g.contactNormals(), g.contactDepth(),
+                    g.U(), reach,
                     alpha_.data(), U
                 );
             }
