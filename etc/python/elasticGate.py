@@ -56,6 +56,18 @@ def rms_errors(case, here):
     return errors
 
 
+def material_suffix(case):
+    """'-<name>' when the case's gate has another material than the
+    tutorial's own (constant/material, whose first line is '// material
+    <name>', written by Allrun -material), else ''"""
+    path = os.path.join(case, "constant", "material")
+    if not os.path.isfile(path):
+        return ""
+    with open(path) as f:
+        words = f.readline().split()
+    return "-" + words[2] if words[:2] == ["//", "material"] else "-material"
+
+
 def validate(here, solver, default_dx, fluid_ratio=1, doc=None):
     """Validate the case named on the command line: 'here' is the
     tutorial's validation folder (the experiment's file, the results),
@@ -102,13 +114,17 @@ def validate(here, solver, default_dx, fluid_ratio=1, doc=None):
                               solid_dx=dx)
     print_checks(checks)
 
-    suffix = result_suffix(dx, default_dx)
+    suffix = result_suffix(dx, default_dx) + material_suffix(case)
     with open(os.path.join(here, "result%s.md" % suffix), "w") as f:
         f.write("# elasticGate (%s): free-end displacement vs Antoci et"
                 " al. 2007\n\n" % solver)
         f.write("Spacing %g m (gate %d particles thick)%s, run to %.3f s.\n\n"
                 % (dx, round(0.005 / dx), "" if fluid_ratio == 1 else
                    ", water %g m" % (fluid_ratio * dx), ts[-1]))
+        if material_suffix(case):
+            with open(os.path.join(case, "constant", "material")) as m:
+                f.write("Gate material (Allrun -material): %s\n\n"
+                        % " ".join(m.read().split()))
         if not complete:
             f.write("**INCOMPLETE**: %s.\n\n" % lines[0].split(": ", 1)[1])
         f.write("| quantity | value |\n|---|---|\n")

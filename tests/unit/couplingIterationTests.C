@@ -323,6 +323,48 @@ TEST(interfaceQuasiNewton, aStepAtMaxIterationsEndsAtItsLeastIterate)
 }
 
 
+TEST(interfaceQuasiNewton, reusedColumnsDroppedHalfwayThroughAStep)
+{
+    // A step converged (its columns kept for reuse), then a step whose
+    // response has no fixed point (H(x)_i = x_i + 1 + sin(x_i)/2: the
+    // residual between 0.5 and 1.5 per component, never 10 times its
+    // smallest, so no restart for growth): at half maxIterations
+    // the reused columns are dropped once (a restart); without reuse there
+    // are none to drop
+    const label n = 6;
+    const linearMap H(addedMassSpectrum(n), 5);
+    const std::vector<double> b(n, 1.0);
+    for (const label reuse : {8, 0})
+    {
+        interfaceQuasiNewton iqn
+        (
+            meshlessTest::dictFrom
+            (
+                "maxIterations 10; tolerance 1e-8; initialRelaxation 0.05;"
+                " reuse " + std::to_string(reuse) + ";"
+            )
+        );
+        std::vector<double> x(n, 0.0);
+        solveStep(iqn, H, b, x);
+        ASSERT_EQ(iqn.unconvergedSteps(), 0);
+        const label restarts = iqn.restarts();
+
+        iqn.beginStep();
+        for (label k = 0; ; ++k)
+        {
+            std::vector<double> xt(x);
+            for (double& v : xt) v += 1 + 0.5*std::sin(v);
+            if (iqn.update(x, xt, k)) break;
+        }
+        iqn.endStep();
+        EXPECT_EQ(iqn.iterations(), 10);
+        EXPECT_EQ(iqn.unconvergedSteps(), 1);
+        EXPECT_EQ(iqn.restarts() - restarts, reuse ? 1 : 0)
+            << "reuse " << reuse;
+    }
+}
+
+
 TEST(interfaceQuasiNewton, badInputNamesTheKeyword)
 {
     const std::string tol = meshlessTest::fatalMessage([]

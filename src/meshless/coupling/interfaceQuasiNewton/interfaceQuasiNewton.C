@@ -208,6 +208,24 @@ bool Foam::meshless::interfaceQuasiNewton::update
         return false;
     }
 
+    // The reused columns, half the step's iterations on: they mislead (the
+    // response has changed since they were taken: another step size, a
+    // switch in the fluid); the step goes on from its best iterate with
+    // columns of its own
+    if (!past_.empty() && 2*iterations_ >= maxIterations_)
+    {
+        current_ = columns();
+        past_.clear();
+        rLast_.clear();
+        ++restarts_;
+        for (size_t i = 0; i < n; ++i)
+        {
+            x[i] = xBest_[i] + initialRelaxation_*rBest_[i];
+        }
+        lastSecant_ = false;
+        return false;
+    }
+
     // The new columns: differences with the last iteration of this step
     if (k > 0 && rLast_.size() == n)
     {

@@ -446,9 +446,15 @@ void Foam::meshless::bodyModels::isph::shift
                     const label* o = tw.offsetData();
                     const label* js = tw.indexData();
                     const double* rs = tw.r();
-                    const double* ns = b.ghosts->normals();
+                    const double* ns = b.ghosts->contactNormals();
                     for (label q = o[i]; q < o[i + 1]; ++q)
                     {
+                        // A structure's particles off its face (no
+                        // normal) are not its face
+                        if (ns && cvec<Dim>(ns, js[q]).squaredNorm() == 0)
+                        {
+                            continue;
+                        }
                         if (rs[q] < rmin)
                         {
                             rmin = rs[q];
