@@ -220,6 +220,8 @@ SCENES = [
                      (0.0025, 0.00125, 0.000625)),
               Method("ULPH + NOSB-PD", "tutorials/ulphPdFoam/elasticGate",
                      "-dx", (0.0025, 0.00125)),
+              Method("ISPH + TLSPH", "tutorials/isphTlsphFoam/elasticGate",
+                     "-dx", (0.0025, 0.00125)),
           ]),
     Scene("hydrostaticPlate", "Hydrostatic plate (water 2 m on an"
           " aluminium plate 0.05 m thick), 3 s",

@@ -18,7 +18,6 @@ stopped before it.
 
 Usage: validate.py <case> [--check]
 """
-import math
 import os
 import sys
 
@@ -26,113 +25,14 @@ here = os.path.dirname(os.path.abspath(__file__))
 project = os.environ.get("MESHLESS_PROJECT",
                          os.path.join(here, "..", "..", "..", ".."))
 sys.path.insert(0, os.path.join(project, "etc", "python"))
-from foamMonitor import (arguments, case_spacing, interp,  # noqa: E402
-                         pyplot, read_monitor, read_rows, result_suffix,
-                         run_cost, wall_time)
+from elasticObstacle import validate  # noqa: E402
 
-DEFAULT_DX = 0.002
-PEAK_DROP = 0.15    # a peak is a maximum followed by this relative fall
-PEAK_MIN = 0.02     # [m], and above this
-
-
-def references():
-    """{source: ([t], [x])} sorted in time"""
-    data = {}
-    for name, t, x in read_rows(os.path.join(here, "referenceSolutions.dat")):
-        data.setdefault(name, []).append((t, x))
-    return {k: tuple(map(list, zip(*sorted(v)))) for k, v in data.items()}
-
-
-def first_peak(ts, xs):
-    """(time, value) of the first peak, and whether the series fell back
-    after it (False: the peak may still be rising at the series' end)"""
-    best, tbest = -math.inf, None
-    for t, x in zip(ts, xs):
-        if x > best:
-            best, tbest = x, t
-        elif best > PEAK_MIN and x < (1 - PEAK_DROP) * best:
-            return tbest, best, True
-    return tbest, best, False
-
-
-def main():
-    case, check = arguments(__doc__)
-
-    run = read_monitor(case, "pointA")
-    ts, xs = run["time"], run["dx"]
-    refs = references()
-    peaks = {k: first_peak(*v) for k, v in refs.items()}
-    t_lo = min(p[0] for p in peaks.values())
-    t_hi = max(p[0] for p in peaks.values())
-    x_lo = min(p[1] for p in peaks.values())
-    x_hi = max(p[1] for p in peaks.values())
-    tp, xp, fell = first_peak(ts, xs)
-    inside = fell and x_lo <= xp <= x_hi and t_lo <= tp <= t_hi
-
-    rms = {}
-    for k, (rt, rx) in refs.items():
-        sq = [(x - interp(t, rt, rx)) ** 2 for t, x in zip(ts, xs)
-              if t <= rt[-1]]
-        rms[k] = math.sqrt(sum(sq) / len(sq))
-
-    cost = run_cost(case)
-    dx = case_spacing(case, DEFAULT_DX)
-
-    verdict = "met" if inside else "MISSED"
-    summary = ("first peak %.4f m at %.3f s; published band %.4f-%.4f m at"
-               " %.3f-%.3f s: %s" % (xp, tp, x_lo, x_hi, t_lo, t_hi,
-                                     verdict))
-    if not fell:
-        summary += " (the run ends before the displacement falls back)"
-    print(summary)
-    for k in sorted(refs):
-        print("  %-13s first peak %.4f m at %.3f s, RMS difference %.4f m"
-              % (k, peaks[k][1], peaks[k][0], rms[k]))
-
-    suffix = result_suffix(dx, DEFAULT_DX)
-    with open(os.path.join(here, "result%s.md" % suffix), "w") as f:
-        f.write("# Elastic obstacle: displacement of point A vs published"
-                " solutions\n\n")
-        f.write("Command: `tutorials/ulphPdFoam/elasticObstacle/Allrun%s`\n\n"
-                % ("" if not suffix else " -dx %g" % dx))
-        f.write("| spacing | particles | steps | solid sub-steps (max) |"
-                " wall time | particle-steps/s | run to | first peak |"
-                " at | target: inside %.4f-%.4f m, %.3f-%.3f s |\n"
-                % (x_lo, x_hi, t_lo, t_hi))
-        f.write("|---|---|---|---|---|---|---|---|---|---|\n")
-        f.write("| %g m (obstacle %d thick) | %d | %d | %d | %s | %.3g |"
-                " %.3f s | %.4f m | %.3f s | %s |\n"
-                % (dx, round(0.012 / dx), cost["particles"], cost["steps"],
-                   cost["subSteps"]["coupling"]["most"], wall_time(cost),
-                   cost["rate"], ts[-1], xp, tp, verdict))
-        f.write("\n| reference | first peak | at | RMS difference from this"
-                " run |\n|---|---|---|---|\n")
-        for k in sorted(refs):
-            f.write("| %s | %.4f m | %.3f s | %.4f m |\n"
-                    % (k, peaks[k][1], peaks[k][0], rms[k]))
-        f.write("\nSet-up: ULPH-NOSBPD paper 4.4, Table 3 (column 0.146 x"
-                " 0.292 m, tank 0.584 m, obstacle 0.012 x 0.08 m at x ="
-                " 0.292 m, rho_s 2500, E 1 MPa, nu 0.08, plane strain,"
-                " hypoelastic; c0 60 m/s, alpha 0.1, water's viscosity),"
-                " no-slip ghost walls, hydrostatic start, adaptive step"
-                " maxCo 0.25. References: validation/referenceSolutions.dat."
-                " Plot: pointA%s.png.\n" % suffix)
-
-    plt = pyplot()
-    if plt:
-        fig, ax = plt.subplots(figsize=(7, 4.5))
-        for k in sorted(refs):
-            ax.plot(refs[k][0], refs[k][1], "-", lw=0.8, label=k)
-        ax.plot(ts, xs, "k-", lw=2, label="ulphPdFoam, dx = %g m" % dx)
-        ax.set_xlim(0, max(0.4, ts[-1]))
-        ax.set_xlabel("t [s]")
-        ax.set_ylabel("x displacement of point A [m]")
-        ax.grid(True)
-        ax.legend(fontsize=8)
-        fig.tight_layout()
-        fig.savefig(os.path.join(here, "pointA%s.png" % suffix), dpi=100)
-    return 1 if check and not inside else 0
-
+SETUP = ("ULPH-NOSBPD paper 4.4, Table 3 (column 0.146 x 0.292 m, tank"
+         " 0.584 m, obstacle 0.012 x 0.08 m at x = 0.292 m, rho_s 2500, E 1"
+         " MPa, nu 0.08, plane strain, hypoelastic; c0 60 m/s, alpha 0.1,"
+         " water's viscosity), no-slip ghost walls, hydrostatic start,"
+         " adaptive step maxCo 0.25.")
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(validate(here, "ulphPdFoam", "tutorials/ulphPdFoam/"
+                      "elasticObstacle", 0.002, SETUP, doc=__doc__))
