@@ -49,6 +49,17 @@ def forces_balanced(case):
     return worst / scale if scale > 0 else float("inf"), steps
 
 
+def iteration_stats(t, case):
+    """(mean iterations per step, steps at maxIterations) from the end of
+    the case's log.isphTlsphFoam, checked to be there; None if not"""
+    with open(os.path.join(case, "log.isphTlsphFoam")) as f:
+        log = f.read()
+    s = re.search(r"coupling isphTlsph: ([0-9.e+-]+) iterations per step on"
+                  r" average, at most (\d+), (\d+) steps stopped", log)
+    t.check("the log gives the iterations", s is not None)
+    return (float(s.group(1)), int(s.group(3))) if s else None
+
+
 def gate(t, work):
     case, code, out = run_tutorial(t, TUTORIAL, work, "gate",
                                    ("-end", "0.15"))
@@ -76,16 +87,11 @@ def gate(t, work):
     t.check("forces on the gate and on the water cancel every step (%d"
             " steps, worst %.1e of the largest)" % (steps, balance),
             steps > 100 and balance < 1e-9)
-    with open(os.path.join(case, "log.isphTlsphFoam")) as f:
-        log = f.read()
-    s = re.search(r"coupling isphTlsph: ([0-9.e+-]+) iterations per step on"
-                  r" average, at most (\d+), (\d+) steps stopped", log)
-    t.check("the log gives the iterations", s is not None)
+    s = iteration_stats(t, case)
     if s:
-        t.check("%s iterations per step on average, at most 8"
-                % s.group(1), float(s.group(1)) <= 8)
-        t.check("%s steps at maxIterations, at most 5" % s.group(3),
-                int(s.group(3)) <= 5)
+        t.check("%s iterations per step on average, at most 8" % s[0],
+                s[0] <= 8)
+        t.check("%d steps at maxIterations, at most 5" % s[1], s[1] <= 5)
 
     # The staggered exchange: energy from the gate's release
     code, _ = run(["foamDictionary", "constant/particleProperties",

@@ -22,7 +22,8 @@ import sys
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(here), "lib"))
 from caseTest import run_parts, run_tutorial  # noqa: E402
-from isphElasticGate import forces_balanced  # noqa: E402
+from isphElasticGate import (forces_balanced,  # noqa: E402
+                             iteration_stats)
 
 TUTORIAL = "tutorials/isphTlsphFoam/elasticObstacle"
 
@@ -47,15 +48,10 @@ def obstacle(t, work):
     t.check("forces on the obstacle and on the water cancel every step (%d"
             " steps, worst %.1e of the largest)" % (steps, balance),
             steps > 100 and balance < 1e-9)
-    with open(os.path.join(case, "log.isphTlsphFoam")) as f:
-        log = f.read()
-    s = re.search(r"coupling isphTlsph: ([0-9.e+-]+) iterations per step on"
-                  r" average, at most (\d+), (\d+) steps stopped", log)
-    t.check("the log gives the iterations", s is not None)
+    s = iteration_stats(t, case)
     if s:
-        t.check("%s iterations per step on average; every step converged"
-                " (%s at maxIterations)" % (s.group(1), s.group(3)),
-                s.group(3) == "0")
+        t.check("%.2f iterations per step on average; every step converged"
+                " (%d at maxIterations)" % s, s[1] == 0)
 
 
 if __name__ == "__main__":

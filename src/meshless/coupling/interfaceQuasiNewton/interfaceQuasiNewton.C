@@ -59,6 +59,23 @@ Foam::meshless::interfaceQuasiNewton::interfaceQuasiNewton
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+void Foam::meshless::interfaceQuasiNewton::restartFromBest
+(
+    std::vector<double>& x
+)
+{
+    current_ = columns();
+    past_.clear();
+    rLast_.clear();
+    ++restarts_;
+    for (size_t i = 0; i < x.size(); ++i)
+    {
+        x[i] = xBest_[i] + initialRelaxation_*rBest_[i];
+    }
+    lastSecant_ = false;
+}
+
+
 bool Foam::meshless::interfaceQuasiNewton::leastSquaresUpdate
 (
     std::vector<double>& x,
@@ -196,15 +213,7 @@ bool Foam::meshless::interfaceQuasiNewton::update
     }
     else if (lastSecant_ && rNorm > restartFactor*bestNorm_)
     {
-        current_ = columns();
-        past_.clear();
-        rLast_.clear();
-        ++restarts_;
-        for (size_t i = 0; i < n; ++i)
-        {
-            x[i] = xBest_[i] + initialRelaxation_*rBest_[i];
-        }
-        lastSecant_ = false;
+        restartFromBest(x);
         return false;
     }
 
@@ -214,15 +223,7 @@ bool Foam::meshless::interfaceQuasiNewton::update
     // columns of its own
     if (!past_.empty() && 2*iterations_ >= maxIterations_)
     {
-        current_ = columns();
-        past_.clear();
-        rLast_.clear();
-        ++restarts_;
-        for (size_t i = 0; i < n; ++i)
-        {
-            x[i] = xBest_[i] + initialRelaxation_*rBest_[i];
-        }
-        lastSecant_ = false;
+        restartFromBest(x);
         return false;
     }
 
