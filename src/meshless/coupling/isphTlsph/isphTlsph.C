@@ -194,9 +194,9 @@ void Foam::meshless::couplings::isphTlsph::advance
         }
         if (done) break;
     }
+    // (leastIterate keeps residual(): the last iterate's)
     const bool converged =
         iterations_->residual() <= iterations_->tolerance();
-    const scalar lastResidual = iterations_->residual();
     const bool least = !converged && iterations_->leastIterate(x_);
     if (least)
     {
@@ -205,7 +205,7 @@ void Foam::meshless::couplings::isphTlsph::advance
     }
     iterations_->endStep();
     Info<< "    coupling isphTlsph: " << iterations_->iterations()
-        << " iterations, residual " << lastResidual;
+        << " iterations, residual " << iterations_->residual();
     if (!converged)
     {
         Info<< ", not converged (maxIterations "
