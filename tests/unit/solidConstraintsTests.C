@@ -14,7 +14,10 @@ Description
     (sum m a = F, first moment at the face) through moving least squares
     weights. A motion constraint puts its particles where a
     solidBodyMotionFunction (a roll) takes them, with the velocity omega x r
-    (1e-8), and at their reference positions at time 0.
+    (1e-8), and at their reference positions at time 0. Contact with a
+    wall (solidWallContact): a particle overlapping the floor by g is
+    pushed out by k g along the face's normal, none that clears it, none
+    above a gap in the floor (a notch: the tile test).
 
 \*---------------------------------------------------------------------------*/
 
@@ -24,6 +27,7 @@ Description
 #include "solidConstraints.H"
 #include "smoothingKernel.H"
 #include "septernion.H"
+#include "solidWallContact.H"
 
 using namespace Foam;
 using namespace Foam::meshless;
@@ -383,4 +387,74 @@ TEST(solidConstraints, motionFollowsTheRigidTransformation)
             EXPECT_NEAR(x(i, k), (*b.X0)(i, k), 1e-14);
         }
     }
+}
+
+
+TEST(solidWallContact, pushesOverlappingParticlesOutOfTheFloor)
+{
+    // A floor below y = 0: 3 layers of wall particles of spacing 4 mm,
+    // normals (0, -1) into it, depths (k + 1/2) dxw; a notch: no wall
+    // particles at x in (-2, 6) mm (columns at 0 and 4 mm left out). Solid
+    // particles of spacing 1 mm (half 0.5 mm) at
+    //   0: x = -10 mm, y = 0.2 mm: overlaps by 0.3 mm -> k (-0.3 mm) (0,-1)
+    //   1: x = -10 mm, y = 0.5 mm: touches, no force
+    //   2: x = 13 mm, y = -1 mm: its extent 1.5 mm inside -> k (-1.5 mm)
+    //   3: x = 2 mm, y = 0.2 mm: above the notch, no floor under it
+    //   4: x = -10 mm, y = 3 mm: clear
+    const double dxw = 0.004, ds = 0.001, k = 1e9;
+    std::vector<double> wall, n, depth;
+    for (int i = -10; i <= 10; ++i)
+    {
+        if (i == 0 || i == 1) continue;
+        for (int l = 0; l < 3; ++l)
+        {
+            wall.push_back(i*dxw);
+            wall.push_back(-(l + 0.5)*dxw);
+            n.push_back(0);
+            n.push_back(-1);
+            depth.push_back((l + 0.5)*dxw);
+        }
+    }
+    const std::vector<double> solid =
+        {-0.010, 0.0002, -0.010, 0.0005, 0.013, -0.001, 0.002, 0.0002,
+         -0.010, 0.003};
+    meshlessTest::pairFixture fx(2);
+    fx.addBody(solid, ds*ds);
+    fx.addBody(wall, dxw*dxw);
+    autoPtr<smoothingKernel> W
+    (
+        meshlessTest::kernel
+        (
+            2, dxw, "type cubicSpline; smoothingLengthRatio 1.2;"
+        )
+    );
+    const neighbourRelation& rel = fx.relate(0, 1, *W);
+    std::vector<double> acc(solid.size(), 0.0);
+    const label touching = solidWallContact::addAccelerations<2>
+    (
+        rel, fx.x(0).data(), fx.x(1).data(), n.data(), depth.data(), dxw,
+        0.5*ds, k, nullptr, acc.data()
+    );
+    EXPECT_EQ(touching, 2);
+    const double expected[5][2] =
+        {{0, k*0.0003}, {0, 0}, {0, k*0.0015}, {0, 0}, {0, 0}};
+    for (int i = 0; i < 5; ++i)
+    {
+        EXPECT_EQ(acc[2*i], 0.0) << i;
+        EXPECT_NEAR(acc[2*i + 1], expected[i][1], 1e-6*k*ds) << i;
+    }
+
+    // A constrained particle (free = 0) is left to its constraint
+    std::fill(acc.begin(), acc.end(), 0.0);
+    const std::vector<char> free = {0, 1, 1, 1, 1};
+    EXPECT_EQ
+    (
+        (solidWallContact::addAccelerations<2>
+        (
+            rel, fx.x(0).data(), fx.x(1).data(), n.data(), depth.data(),
+            dxw, 0.5*ds, k, free.data(), acc.data()
+        )),
+        1
+    );
+    EXPECT_EQ(acc[1], 0.0);
 }

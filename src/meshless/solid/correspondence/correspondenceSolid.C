@@ -250,6 +250,7 @@ void Foam::meshless::correspondenceSolid::evaluate
     }
 
     body_.addEffectAccelerations(t, acc_, costs);
+    addWallContact(acc_);
     constraints_->addLoads(t, acc_);
 
     for (label a = 0; a < n; ++a)

@@ -3,6 +3,9 @@
 \*---------------------------------------------------------------------------*/
 
 #include "solidModel.H"
+#include "solidWallContact.H"
+#include "ghostBoundary.H"
+#include "dispatchDim.H"
 #include "particleScene.H"
 #include "particleExpression.H"
 #include "smallTensor.H"
@@ -57,6 +60,10 @@ Foam::meshless::solidModel::solidModel
     maxCo_(0.3),
     accValid_(false),
     accValidSaved_(false),
+    xn_(nullptr),
+    Un_(nullptr),
+    sumX_(nullptr),
+    sumU_(nullptr),
     beta_(0.25),
     gamma_(0.5),
     alphaM_(0),
@@ -69,10 +76,6 @@ Foam::meshless::solidModel::solidModel
     newtonIters_(0),
     newtonResidual_(0),
     failure_(),
-    xn_(nullptr),
-    Un_(nullptr),
-    sumX_(nullptr),
-    sumU_(nullptr),
     N0_(nullptr),
     normals_(nullptr)
 {
@@ -186,6 +189,81 @@ void Foam::meshless::solidModel::connect(particleScene& scene)
             &body_.kernel()
         )
     );
+
+    // Contact with walls: the solid's particles among each wall's, within
+    // the solid's kernel support grown to reach the face particles of the
+    // wall (half the wall's spacing behind the face and along it) from a
+    // particle a spacing off the face, and the step's motion (a half)
+    contactWalls_.clear();
+    for (const word& name : dict_.getOrDefault<wordList>("walls", wordList()))
+    {
+        particleBody& wb = scene.body(name, dict_);
+        ghostBoundary* wall = dynamic_cast<ghostBoundary*>(&wb.model());
+        if (!wall || wb.model().role() != modelRole::wall)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Entry 'walls': body '" << name << "' is not a wall"
+                << " (expected a ghostWall body)" << exit(FatalIOError);
+        }
+        if (!wall->contactNormals() || !wall->contactDepth())
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Entry 'walls': wall '" << name << "' has no normals and"
+                << " wall distances (expected a wall seeded as wall layers"
+                << " by seedParticles)" << exit(FatalIOError);
+        }
+        if (wb.dim() != body_.dim())
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Entry 'walls': wall '" << name << "' is " << wb.dim()
+                << "D, the solid " << body_.dim() << "D"
+                << exit(FatalIOError);
+        }
+        const smoothingKernel& W = body_.kernel();
+        const scalar reach =
+            Foam::sqrt
+            (
+                sqr(0.5*wb.spacing())
+              + sqr(body_.spacing() + 0.5*wb.spacing())
+            );
+        const scalar skin = max(0.5, 1.5*reach/W.radius() - 1);
+        contactWalls_.push_back
+        (
+            contactWall
+            {
+                wall,
+                &scene.relations().contact
+                (
+                    body_.name() + " to " + name + " (contact)",
+                    body_.particles().positions(), wb.particles().positions(),
+                    W, skin, true, wall->moving(),
+                    neighbourRelation::separation
+                )
+            }
+        );
+    }
+}
+
+
+void Foam::meshless::solidModel::addWallContact(particleField& acc) const
+{
+    if (contactWalls_.empty()) return;
+    const scalar dx = body_.spacing();
+    const scalar c = waveSpeed();
+    const double* x = body_.particles().positions().data();
+    for (const contactWall& w : contactWalls_)
+    {
+        const particleBody& wb = w.wall->ghostBody();
+        dispatchDim(body_.dim(), [&](auto d)
+        {
+            solidWallContact::addAccelerations<d>
+            (
+                *w.rel, x, wb.particles().positions().data(),
+                w.wall->contactNormals(), w.wall->contactDepth(),
+                wb.spacing(), 0.5*dx, c*c/(dx*dx), nullptr, acc.data()
+            );
+        });
+    }
 }
 
 
