@@ -593,6 +593,102 @@ TEST(isphEquations, shiftingNearAFinerStructureAsNearTheFluidsLattice)
 }
 
 
+TEST(isphEquations, structureLayerShiftIsEquation27)
+{
+    // s + d (exp(-s/d) - 1) for s >= 0 (eq. 27), odd in s: against the
+    // formula where it has no cancellation, its Taylor series s^2/(2d)
+    // where it has, smaller than s everywhere, and s - d far out
+    using namespace Foam::meshless::isphEquations;
+    const double d = 2e-4;
+    for (const double x : {0.01, 0.3, 1.0, 3.0, 10.0})
+    {
+        const double s = x*d;
+        const double exact = s + d*(std::exp(-x) - 1);
+        EXPECT_NEAR(structureLayerShift(s, d), exact, 1e-12*s) << x;
+        EXPECT_NEAR(structureLayerShift(-s, d), -exact, 1e-12*s) << x;
+        EXPECT_LT(structureLayerShift(s, d), s);
+    }
+    for (const double x : {1e-9, 1e-6, 5e-4})
+    {
+        const double s = x*d;
+        EXPECT_NEAR(structureLayerShift(s, d), 0.5*s*x, 1e-3*0.5*s*x) << x;
+    }
+    EXPECT_NEAR(structureLayerShift(1e3*d, d), 1e3*d - d, 1e-12*d);
+    EXPECT_EQ(structureLayerShift(0.0, d), 0.0);
+    EXPECT_EQ(structureLayerShift(3e-5, 0.0), 3e-5);   // no layer
+}
+
+
+TEST(isphEquations, structureLayerDampsTheNormalShiftOnly)
+{
+    // A structure's face at y = 0 (surface row normals (0, -1) into it,
+    // inner rows none, depth half a spacing), fluid particles 0.5, 1.5 and
+    // 2 dx above it. With zeta = |u|max dt = 0.05 dx, k = 5 and
+    // R = (0.4, 0.2): |d| = k zeta/|R_y| = 1.25 dx. The particles within
+    // 1.25 dx of the face (0.5 dx) have the normal part of their shift
+    // mapped by eq. 27, the tangential part kept; the one at 1.5 dx is
+    // beyond the layer (within it for k = 10); the ones at 2 and 20 dx
+    // have no face particle within their support and are left
+    using namespace Foam::meshless;
+    using namespace Foam::meshless::isphEquations;
+    const double dx = 0.01;
+    std::vector<double> wall, n, depth;
+    for (int i = -8; i <= 8; ++i)
+    {
+        for (int k = 0; k < 3; ++k)
+        {
+            wall.push_back(i*dx);
+            wall.push_back(-(k + 0.5)*dx);
+            n.push_back(0);
+            n.push_back(k == 0 ? -1 : 0);
+            depth.push_back(0.5*dx);
+        }
+    }
+    const std::vector<double> fluid =
+        {0.0, 0.5*dx, 0.0, 1.5*dx, 0.0, 2*dx, 0.0, 20*dx};
+    meshlessTest::pairFixture fx(2);
+    fx.addBody(fluid, dx*dx);
+    fx.addBody(wall, dx*dx);
+    autoPtr<smoothingKernel> W(meshlessTest::kernel(2, dx, spline));
+    const neighbourRelation& rel = fx.relate(0, 1, *W);
+
+    const double zeta = 0.05*dx, k = 5;
+    const vectorD<2> R(0.4, 0.2);
+    const vectorD<2> shift(0.1*zeta*R);         // C = 0.1 (eq. 21)
+    const double layer = k*zeta/0.2;
+    ASSERT_NEAR(layer, 1.25*dx, 1e-15);
+
+    // In the layer: the shift's normal part s = -dr_y (n = (0, -1))
+    vectorD<2> dr = shift;
+    EXPECT_TRUE
+    (
+        structureLayer<2>(rel, 0, n.data(), depth.data(), R, zeta, k, dr)
+    );
+    EXPECT_DOUBLE_EQ(dr[0], shift[0]);
+    EXPECT_NEAR(dr[1], -structureLayerShift(-shift[1], layer), 1e-18);
+    EXPECT_LT(std::abs(dr[1]), 0.02*std::abs(shift[1]));
+
+    // Beyond it
+    for (const label i : {1, 2, 3})
+    {
+        dr = shift;
+        EXPECT_FALSE
+        (
+            structureLayer<2>(rel, i, n.data(), depth.data(), R, zeta, k, dr)
+        ) << i;
+        EXPECT_EQ(dr, shift);
+    }
+
+    // A larger k deepens the layer: the particle 1.5 dx from the face in
+    dr = shift;
+    EXPECT_TRUE
+    (
+        structureLayer<2>(rel, 1, n.data(), depth.data(), R, zeta, 10, dr)
+    );
+    EXPECT_DOUBLE_EQ(dr[0], shift[0]);
+}
+
+
 TEST(isphEquations, wallPairDryAboveTheWatersLevel)
 {
     const double rho = 1000, g = 9.81, dx = 0.002;

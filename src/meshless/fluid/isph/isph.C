@@ -194,6 +194,10 @@ Foam::meshless::bodyModels::isph::isph
             shiftNearWallsType::normal
         )
     ),
+    structureLayer_
+    (
+        readNonNegativeOrDefault(dict, "structureShiftingLayer", 0)
+    ),
     solver_
     (
         linearSolver::New
@@ -475,6 +479,22 @@ void Foam::meshless::bodyModels::isph::shift
                         if (into > 0) dr -= into*nn;
                     }
                 }
+            }
+        }
+
+        // The FSI layer on each coupled structure's face (eq. 27-30)
+        if (structureLayer_ > 0)
+        {
+            const vectorD<Dim> R = cvec<Dim>(shiftR_.data(), i);
+            for (const boundary& b : boundaries_)
+            {
+                const double* ns = b.ghosts->contactNormals();
+                if (b.wall || !ns) continue;
+                structureLayer<Dim>
+                (
+                    *b.toGhosts, i, ns, b.ghosts->contactDepth(), R, zeta,
+                    structureLayer_, dr
+                );
             }
         }
 
