@@ -22,9 +22,12 @@ other solvers' tip.dat.
 
 Applies fsiChecks' stability checks (run to the end, no particle lost,
 water in the tank below its walls' top and not in the plate, energy not
-growing, the plate's particle-scale velocity noise below 0.1 sqrt(g H))
-and the coupling's momentum balance (the water's force on the plate and
-the plate's on the water cancel to 1e-9 of it at every step).
+growing, the plate's particle-scale velocity noise below 0.1 sqrt(g H)),
+the coupling's momentum balance (the water's force on the plate and
+the plate's on the water cancel to 1e-9 of it at every step), and that
+the plate, which folds onto the floor, stays out of it: no plate particle
+outside the notch reaches more than half its spacing into the floor (its
+own extent half a spacing, so its centre no lower than 0).
 
 With --check, exits 1 when a check is missed.
 
@@ -35,6 +38,7 @@ import os
 
 from foamMonitor import (arguments, case_spacing, pyplot, read_monitor,
                          result_suffix, run_cost)
+from foamCloud import read_positions, times
 from fsiChecks import (check_rows, momentum_exchange, print_checks,
                        stability_checks)
 from solverComparison import (cost_rows, plot_comparison, resample,
@@ -44,6 +48,7 @@ H = 0.4             # water column height [m]
 W = 0.2             # water column width [m]
 TANK = (0.0, 0.8)   # tank's side walls [m]
 WALLS_TOP = 0.6     # the walls' top: the tank is open above [m]
+NOTCH = (0.596, 0.6)  # the plate's foot, below the floor [m]
 IMPACT = 0.001      # tip x that marks the impact [m]
 SAMPLE = 0.002      # interval of tip.dat [s]
 
@@ -62,6 +67,18 @@ def figures(ts, xs):
     tail = [x for t, x in zip(ts, xs) if t >= ts[-1] - 0.2]
     return {"impact": impact, "first": first, "largest": (xs[k], ts[k]),
             "mean": sum(tail) / len(tail), "range": (min(tail), max(tail))}
+
+
+def floor_overlap(case, dx):
+    """The deepest overlap of a plate particle (its extent dx/2) with the
+    floor outside the notch over the written times: max(dx/2 - y) [m]"""
+    worst = -math.inf
+    for _, name in times(case):
+        for x, y in ((p[0], p[1]) for p in
+                     read_positions(case, name, "plate")):
+            if not NOTCH[0] <= x <= NOTCH[1]:
+                worst = max(worst, 0.5 * dx - y)
+    return worst
 
 
 def validate(here, solver, default_dx, fluid_ratio=1, doc=None):
@@ -99,6 +116,9 @@ def validate(here, solver, default_dx, fluid_ratio=1, doc=None):
                               1000 * 9.81 * H ** 2 * W / 2,
                               velocity_scale=math.sqrt(9.81 * H),
                               walls_top=WALLS_TOP, solid_dx=dx)
+    overlap = floor_overlap(case, dx)
+    checks.append(("the plate out of the floor (deepest overlap %.2f dx"
+                   " <= 0.5 dx)" % (overlap / dx), overlap <= 0.5 * dx))
     balance = momentum_exchange(case, floor=1e-6)
     checks.append(("the water's force on the plate and the plate's on the"
                    " water cancel (largest |F_fs + F_sf|/|F_fs| %.1e"
