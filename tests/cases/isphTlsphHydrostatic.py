@@ -31,7 +31,8 @@ pairwise walls, CG), 0.5 s:
   regions) within 10 % (+3.3 % measured; the load is the rigid plate's).
 - Bad input: a weakly compressible fluid (riemannWcsph) refused, naming
   isph and the couplings to use instead; solidAcceleration other than
-  none or step refused, naming the keyword.
+  none or step refused, naming the keyword; a solid's contact 'walls'
+  naming a body that is not a ghost wall refused, naming the entry.
 
 And the tutorial isphTlsphFoam/hydrostaticPlate, coarse and short
 (Allrun -n 4 -end 0.5: 4 plate particles through the thickness, the water
@@ -145,6 +146,20 @@ def elastic(t, work):
             code != 0 and "solidAcceleration" in log and "step" in log,
             log[-1500:])
     set_entry(case, PROPS, "coupling/solidAcceleration", "none")
+
+    # A solid's contact 'walls' must name ghost walls
+    set_entry(case, PROPS, "bodies/plate/walls", "(water)")
+    code, log = run(["isphTlsphFoam"], case)
+    t.check("a solid's contact with a fluid ('walls (water)') refused,"
+            " naming the entry, the body and a ghostWall", code != 0
+            and "'walls'" in log and "water" in log and "ghostWall" in log,
+            log[-1500:])
+    set_entry(case, PROPS, "bodies/plate/walls", "(tank)")
+    code, log = run(["isphTlsphFoam"], case)
+    t.check("'walls (tank)' taken (the run starts and ends)", code == 0,
+            log[-1500:])
+    set_entry(case, PROPS, "bodies/plate/walls", "()")
+
     set_entry(case, PROPS, "bodies/water/model", "riemannWcsph")
     set_entry(case, PROPS, "bodies/water/soundSpeed", 20)
     set_entry(case, PROPS, "bodies/water/kernelCorrection", "none")

@@ -444,17 +444,31 @@ TEST(solidWallContact, pushesOverlappingParticlesOutOfTheFloor)
         EXPECT_NEAR(acc[2*i + 1], expected[i][1], 1e-6*k*ds) << i;
     }
 
-    // A constrained particle (free = 0) is left to its constraint
+    // A particle that is not active (one that started against the wall)
+    // is left alone
     std::fill(acc.begin(), acc.end(), 0.0);
-    const std::vector<char> free = {0, 1, 1, 1, 1};
+    const std::vector<double> active = {0, 1, 1, 1, 1};
     EXPECT_EQ
     (
         (solidWallContact::addAccelerations<2>
         (
             rel, fx.x(0).data(), fx.x(1).data(), n.data(), depth.data(),
-            dxw, 0.5*ds, k, free.data(), acc.data()
+            dxw, 0.5*ds, k, active.data(), acc.data()
         )),
         1
     );
     EXPECT_EQ(acc[1], 0.0);
+
+    // The gaps: -0.3 mm, 0 (touching), -1.5 mm, none (the notch), 2.5 mm
+    std::vector<double> gap;
+    solidWallContact::gaps<2>
+    (
+        rel, fx.x(0).data(), fx.x(1).data(), n.data(), depth.data(), dxw,
+        0.5*ds, gap
+    );
+    const double expectedGap[5] = {-0.0003, 0, -0.0015, GREAT, 0.0025};
+    for (int i = 0; i < 5; ++i)
+    {
+        EXPECT_NEAR(gap[i], expectedGap[i], 1e-12) << i;
+    }
 }

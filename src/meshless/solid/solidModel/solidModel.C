@@ -238,7 +238,12 @@ void Foam::meshless::solidModel::connect(particleScene& scene)
                     body_.particles().positions(), wb.particles().positions(),
                     W, skin, true, wall->moving(),
                     neighbourRelation::separation
-                )
+                ),
+                &body_.particles().addScratchField
+                (
+                    "wallContact:" + name, particleField::kind::scalar
+                ),
+                false
             }
         );
     }
@@ -251,16 +256,35 @@ void Foam::meshless::solidModel::addWallContact(particleField& acc) const
     const scalar dx = body_.spacing();
     const scalar c = waveSpeed();
     const double* x = body_.particles().positions().data();
-    for (const contactWall& w : contactWalls_)
+    for (contactWall& w : contactWalls_)
     {
         const particleBody& wb = w.wall->ghostBody();
+        const double* xw = wb.particles().positions().data();
         dispatchDim(body_.dim(), [&](auto d)
         {
+            if (!w.ready)
+            {
+                // The particles that start against the wall (their
+                // reference positions; on a restart they have not moved
+                // far from them) take no contact with it
+                std::vector<double> gap0;
+                solidWallContact::gaps<d>
+                (
+                    *w.rel, X0_.data(), xw, w.wall->contactNormals(),
+                    w.wall->contactDepth(), wb.spacing(), 0.5*dx, gap0
+                );
+                double* a = w.active->data();
+                for (size_t i = 0; i < gap0.size(); ++i)
+                {
+                    a[i] = gap0[i] > 0.25*dx ? 1 : 0;
+                }
+                w.ready = true;
+            }
             solidWallContact::addAccelerations<d>
             (
-                *w.rel, x, wb.particles().positions().data(),
-                w.wall->contactNormals(), w.wall->contactDepth(),
-                wb.spacing(), 0.5*dx, c*c/(dx*dx), nullptr, acc.data()
+                *w.rel, x, xw, w.wall->contactNormals(),
+                w.wall->contactDepth(), wb.spacing(), 0.5*dx, c*c/(dx*dx),
+                w.active->data(), acc.data()
             );
         });
     }
