@@ -239,11 +239,7 @@ void Foam::meshless::solidModel::connect(particleScene& scene)
                     W, skin, true, wall->moving(),
                     neighbourRelation::separation
                 ),
-                &body_.particles().addScratchField
-                (
-                    "wallContact:" + name, particleField::kind::scalar
-                ),
-                false
+                std::vector<double>()
             }
         );
     }
@@ -262,7 +258,7 @@ void Foam::meshless::solidModel::addWallContact(particleField& acc) const
         const double* xw = wb.particles().positions().data();
         dispatchDim(body_.dim(), [&](auto d)
         {
-            if (!w.ready)
+            if (w.active.empty())
             {
                 // The particles that start against the wall (their
                 // reference positions; on a restart they have not moved
@@ -273,18 +269,17 @@ void Foam::meshless::solidModel::addWallContact(particleField& acc) const
                     *w.rel, X0_.data(), xw, w.wall->contactNormals(),
                     w.wall->contactDepth(), wb.spacing(), 0.5*dx, gap0
                 );
-                double* a = w.active->data();
+                w.active.resize(gap0.size());
                 for (size_t i = 0; i < gap0.size(); ++i)
                 {
-                    a[i] = gap0[i] > 0.25*dx ? 1 : 0;
+                    w.active[i] = gap0[i] > 0.25*dx ? 1 : 0;
                 }
-                w.ready = true;
             }
             solidWallContact::addAccelerations<d>
             (
                 *w.rel, x, xw, w.wall->contactNormals(),
                 w.wall->contactDepth(), wb.spacing(), 0.5*dx, c*c/(dx*dx),
-                w.active->data(), acc.data()
+                w.active.data(), acc.data()
             );
         });
     }
