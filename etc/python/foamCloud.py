@@ -5,7 +5,9 @@ validation scripts and tests (ParaView's reader converts to float32).
     from foamCloud import times, read_cloud
 
 read_cloud(case, time, body) returns {"id": [...], "positions": [[x,y,z],..],
-<field>: [...]} for the files of <case>/<time>/lagrangian/<body>/, ascii or
+<field>: [...]} for the files of <case>/<time>/lagrangian/<body>/ (but
+OpenFOAM's barycentric 'coordinates'; positions from the exact 'position'
+field when there is one), ascii or
 binary (writeFormat binary: the arch of the file's header gives the sizes
 of labels and scalars); read_field and read_positions one file of it;
 speed_history a body's RMS and largest speed at each written time.
@@ -46,10 +48,14 @@ def _read_binary(path, raw):
     count, '(' and the packed values"""
     head = raw[:raw.index(b"}", raw.index(b"FoamFile")) + 1].decode()
     cls = re.search(r"class\s+(\w+);", head).group(1)
-    if cls not in _COMPONENTS:
-        raise ValueError("%s: binary %s not supported" % (path, cls))
     arch = re.search(r'arch\s+"([^"]*)"', head)
     arch = arch.group(1) if arch else "LSB;label=32;scalar=64"
+    if cls == "labelFieldField":
+        return _read_binary_label_lists(path, raw, head, arch)
+    if cls == "labelFieldCompactField":
+        return _read_binary_compact_label_lists(path, raw, head, arch)
+    if cls not in _COMPONENTS:
+        raise ValueError("%s: binary %s not supported" % (path, cls))
     order = "<" if arch.startswith("LSB") else ">"
     bits = dict(re.findall(r"(label|scalar)=(\d+)", arch))
     if cls == "labelField":
@@ -73,10 +79,66 @@ def _read_binary(path, raw):
     return [list(values[i * k:(i + 1) * k]) for i in range(n)]
 
 
+def _read_binary_label_lists(path, raw, head, arch):
+    """A binary labelFieldField (per particle a list of labels): the count,
+    '(' and per entry its length and, when not empty, its packed labels"""
+    order = "<" if arch.startswith("LSB") else ">"
+    bits = dict(re.findall(r"(label|scalar)=(\d+)", arch))
+    code, size = {"32": ("i", 4), "64": ("q", 8)}[bits.get("label", "32")]
+    m = re.compile(rb"\n\s*(\d+)\s*(\(|\n|$)").search(raw, len(head))
+    if m is None:
+        raise ValueError("no list in " + path)
+    n = int(m.group(1))
+    if n == 0:
+        return []
+    pos, out = m.end(), []
+    number = re.compile(rb"\s*(\d+)\s*")
+    for _ in range(n):
+        k = number.match(raw, pos)
+        if k is None:
+            raise ValueError("%s: entry %d has no length" % (path, len(out)))
+        length, pos = int(k.group(1)), k.end()
+        if length:
+            if raw[pos:pos + 1] != b"(":
+                raise ValueError("%s: expected '(' in entry %d"
+                                 % (path, len(out)))
+            out.append(list(struct.unpack_from(order + code * length, raw,
+                                               pos + 1)))
+            pos += 1 + size * length + 1
+        else:
+            out.append([])
+    return out
+
+
+def _read_binary_compact_label_lists(path, raw, head, arch):
+    """A binary labelFieldCompactField (what OpenFOAM's utilities write for
+    a labelFieldField in binary): the offsets list, then the values list"""
+    order = "<" if arch.startswith("LSB") else ">"
+    bits = dict(re.findall(r"(label|scalar)=(\d+)", arch))
+    code, size = {"32": ("i", 4), "64": ("q", 8)}[bits.get("label", "32")]
+    lists, pos = [], len(head)
+    count = re.compile(rb"\s*(?://[^\n]*\n\s*)*(\d+)\s*")
+    for _ in range(2):
+        m = count.match(raw, pos)
+        if m is None:
+            raise ValueError("%s: expected a list's size" % path)
+        n, pos = int(m.group(1)), m.end()
+        if n and raw[pos:pos + 1] == b"(":
+            lists.append(list(struct.unpack_from(order + code * n, raw,
+                                                 pos + 1)))
+            pos += 1 + size * n + 1
+        else:
+            lists.append([])
+    offsets, values = lists
+    return [values[offsets[k]:offsets[k + 1]]
+            for k in range(len(offsets) - 1)]
+
+
 def read_list(path):
     """A list file: scalars, labels, or vectors/tensors as lists, ascii or
     binary. Handles the uniform form N{value}. Positions lines
-    '(x y z) celli' give [x, y, z]."""
+    '(x y z) celli' give [x, y, z]; a labelFieldField (a list of labels
+    per particle, e.g. brokenBonds) lists of numbers."""
     raw = open(path, "rb").read()
     if re.search(rb"format\s+binary\s*;", raw[:2000]):
         return _read_binary(path, raw)
@@ -106,9 +168,17 @@ def read_list(path):
 def read_cloud(case, time, body):
     """Every file of a cloud, by name."""
     d = os.path.join(case, time, "lagrangian", body)
+    names = sorted(os.listdir(d))
     out = {}
-    for name in sorted(os.listdir(d)):
+    for name in names:
+        # OpenFOAM's barycentric coordinates are not read; positions are
+        # the exact 'position' field when there is one (see read_positions)
+        if name == "coordinates" or (name == "positions"
+                                     and "position" in names):
+            continue
         out[name] = read_list(os.path.join(d, name))
+    if "position" in out:
+        out["positions"] = out["position"]
     if "id" in out:
         out["id"] = [int(v) for v in out["id"]]
     return out
@@ -120,8 +190,12 @@ def read_field(case, time, body, name):
 
 
 def read_positions(case, time, body):
-    """Positions of a cloud ([x, y, z] each): always ascii, whatever the
-    case's writeFormat."""
+    """Positions of a cloud ([x, y, z] each): the exact 'position' field
+    when written (it is what decomposePar and reconstructPar carry
+    unchanged), otherwise the positions file."""
+    if os.path.exists(os.path.join(case, time, "lagrangian", body,
+                                   "position")):
+        return read_field(case, time, body, "position")
     return read_field(case, time, body, "positions")
 
 

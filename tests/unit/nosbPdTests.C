@@ -31,6 +31,9 @@ Description
 #include "constitutiveLaw.H"
 #include "smoothingKernel.H"
 #include "OSspecific.H"
+#include "lagrangianIO.H"
+#include "labelFieldIOField.H"
+#include "IFstream.H"
 #include <cmath>
 #include <random>
 
@@ -645,33 +648,68 @@ TEST(nosbPd, brokenBondsSurviveWriteAndReadById)
     mkDir(root/"brokenBonds");
     Time runTime(controlDict, root, "brokenBonds", "system", "constant",
                  false, false);
+    lagrangianIO::write(L.set, runTime, "0", 0);
     L.fam->writeBroken(L.set, runTime, "0");
 
-    // The same particles in reverse order (as a restart may read them)
-    pdLattice R(2, 10, 0.1);
-    std::vector<label> order(R.size());
-    for (label i = 0; i < R.size(); ++i) order[i] = R.size() - 1 - i;
-    R.set.reorder(order);
-    R.buildBonds();
-    EXPECT_EQ(R.fam->readBroken(R.set, runTime, "0"), broken/2);
-    EXPECT_EQ(R.fam->nBrokenSides(), broken);
-
-    // Bond by bond, by ids
-    for (label i = 0; i < L.size(); ++i)
+    // The same particles in reverse order (as a restart may read them),
+    // from the file as written and as OpenFOAM's utilities write it in
+    // binary (decomposePar, reconstructPar: the compact form, offsets and
+    // values)
+    auto readBack = [&](const char* what)
     {
-        const label ri = R.set.findId(L.set.ids()[i]);
-        for (label b = L.fam->begin(i); b < L.fam->end(i); ++b)
+        SCOPED_TRACE(what);
+        pdLattice R(2, 10, 0.1);
+        std::vector<label> order(R.size());
+        for (label i = 0; i < R.size(); ++i) order[i] = R.size() - 1 - i;
+        R.set.reorder(order);
+        R.buildBonds();
+        EXPECT_EQ(R.fam->readBroken(R.set, runTime, "0"), broken/2);
+        EXPECT_EQ(R.fam->nBrokenSides(), broken);
+
+        // Bond by bond, by ids
+        for (label i = 0; i < L.size(); ++i)
         {
-            const label rj = R.set.findId(L.set.ids()[L.fam->neighbour(b)]);
-            for (label c = R.fam->begin(ri); c < R.fam->end(ri); ++c)
+            const label ri = R.set.findId(L.set.ids()[i]);
+            for (label b = L.fam->begin(i); b < L.fam->end(i); ++b)
             {
-                if (R.fam->neighbour(c) == rj)
+                const label rj =
+                    R.set.findId(L.set.ids()[L.fam->neighbour(b)]);
+                for (label c = R.fam->begin(ri); c < R.fam->end(ri); ++c)
                 {
-                    EXPECT_EQ(R.fam->intact(c), L.fam->intact(b));
+                    if (R.fam->neighbour(c) == rj)
+                    {
+                        EXPECT_EQ(R.fam->intact(c), L.fam->intact(b));
+                    }
                 }
             }
         }
-    }
+    };
+    readBack("labelFieldField");
+
+    const IOobject io
+    (
+        peridynamicFamilies::brokenBondsName,
+        "0",
+        lagrangianIO::cloudLocal(L.set.name()),
+        runTime,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+    labelFieldCompactIOField compact(io);
+    ASSERT_EQ(compact.size(), L.size());
+    compact.writeObject
+    (
+        IOstream::BINARY,
+        IOstream::currentVersion,
+        IOstream::UNCOMPRESSED,
+        true
+    );
+    IFstream is(io.objectPath());
+    IOobject header(io);
+    ASSERT_TRUE(header.readHeader(is));
+    EXPECT_EQ(header.headerClassName(), labelFieldCompactIOField::typeName);
+    readBack("labelFieldCompactField, binary");
     rmDir(root);
 }
 

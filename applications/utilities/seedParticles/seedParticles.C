@@ -303,6 +303,8 @@ int main(int argc, char *argv[])
         "Sample the mesh into particles as described by"
         " system/seedParticlesDict"
     );
+    // Seeded once on the whole case; decomposePar then splits the clouds
+    argList::noParallel();
     #include "setRootCase.H"
     #include "createTime.H"
     #include "createPolyMesh.H"
@@ -470,7 +472,14 @@ int main(int argc, char *argv[])
 
     for (const auto& set : sets)
     {
-        lagrangianIO::write(*set, runTime, runTime.timeName(), zPlane);
+        lagrangianIO::write
+        (
+            *set,
+            runTime,
+            runTime.timeName(),
+            zPlane,
+            lagrangianIO::locate(*set, mesh, zPlane)
+        );
         Info<< "Written " << set->name() << " to "
             << (runTime.timeName()/lagrangianIO::cloudLocal(set->name())).c_str()
             << nl;

@@ -10,6 +10,10 @@
 #include "IFstream.H"
 #include "OSspecific.H"
 #include "cloud.H"
+#include "indexedOctree.H"
+#include "treeDataCell.H"
+#include "tetIndices.H"
+#include <cstring>
 #include <limits>
 
 namespace
@@ -218,7 +222,14 @@ void readFields
 {
     for (const word& name : objects.sortedNames(IOField<Type>::typeName))
     {
-        if (name == particleSet::positionsName) continue;
+        if
+        (
+            name == particleSet::positionsName
+         || name == lagrangianIO::exactPositionName
+        )
+        {
+            continue;
+        }
         const autoPtr<IOField<Type>> pIn
         (
             readIOField<Type>(*objects.findObject(name), set.name())
@@ -355,7 +366,14 @@ token readPositionNumber
     return t;
 }
 
+
 } // End anonymous namespace
+
+
+const Foam::word Foam::meshless::lagrangianIO::exactPositionName
+(
+    "position"
+);
 
 
 Foam::fileName Foam::meshless::lagrangianIO::cloudLocal(const word& body)
@@ -384,6 +402,54 @@ Foam::wordList Foam::meshless::lagrangianIO::clouds
 }
 
 
+Foam::meshless::lagrangianIO::meshLocation
+Foam::meshless::lagrangianIO::locate
+(
+    const particleSet& set,
+    const polyMesh& mesh,
+    const scalar zPlane
+)
+{
+    const label dim = set.dim();
+    const label n = set.size();
+    const particleField& x = set.positions();
+    meshLocation where;
+    where.cell.setSize(n, -1);
+    where.tetFace.setSize(n, -1);
+    where.tetPt.setSize(n, -1);
+    where.coordinates.setSize(n, barycentric(1, 0, 0, 0));
+    if (n == 0 || mesh.nCells() == 0)
+    {
+        return where;
+    }
+    const indexedOctree<treeDataCell>& tree = mesh.cellTree();
+    for (label i = 0; i < n; ++i)
+    {
+        const point p(x(i, 0), x(i, 1), dim == 3 ? x(i, 2) : zPlane);
+        label c = tree.findInside(p);
+        if (c < 0)
+        {
+            c = tree.findNearest(p, GREAT).index();
+        }
+        label tetFacei = -1, tetPti = -1;
+        mesh.findTetFacePt(c, p, tetFacei, tetPti);
+        if (tetFacei < 0)
+        {
+            // Outside the cell: any of its tets, the coordinates
+            // extrapolated (as OpenFOAM's particle::locate starts)
+            tetFacei = mesh.cells()[c][0];
+            tetPti = 1;
+        }
+        where.cell[i] = c;
+        where.tetFace[i] = tetFacei;
+        where.tetPt[i] = tetPti;
+        where.coordinates[i] =
+            tetIndices(c, tetFacei, tetPti).tet(mesh).pointToBarycentric(p);
+    }
+    return where;
+}
+
+
 void Foam::meshless::lagrangianIO::write
 (
     const particleSet& set,
@@ -392,45 +458,87 @@ void Foam::meshless::lagrangianIO::write
     const scalar zPlane
 )
 {
+    meshLocation none;
+    none.cell.setSize(set.size(), -1);
+    write(set, runTime, timeName, zPlane, none);
+}
+
+
+void Foam::meshless::lagrangianIO::write
+(
+    const particleSet& set,
+    const Time& runTime,
+    const word& timeName,
+    const scalar zPlane,
+    const meshLocation& where
+)
+{
     const label dim = set.dim();
     const label n = set.size();
     const particleField& x = set.positions();
-
-    // Positions in the legacy format every lagrangian reader understands
-    IOobject posIO
-    (
-        cloudObject(particleSet::positionsName, runTime, timeName, set.name())
-    );
-    const IOobject posHeader
-    (
-        cloudObject
-        (
-            particleSet::positionsName,
-            runTime,
-            atomicTimeWriter::timeOf(timeName),
-            set.name()
-        )
-    );
-    mkDir(posIO.path());
+    if (where.cell.size() != n)
     {
-        OFstream os(posIO.objectPath(), IOstream::ASCII);
-        os.precision(max(os.precision(), restartPrecision));
-        posHeader.writeHeader(os, "Cloud<passiveParticle>");
-        os  << n << nl << token::BEGIN_LIST << nl;
-        for (label i = 0; i < n; ++i)
-        {
-            os  << token::BEGIN_LIST << x(i, 0) << token::SPACE << x(i, 1)
-                << token::SPACE << (dim == 3 ? x(i, 2) : zPlane)
-                << token::END_LIST << " -1" << nl;
-        }
-        os  << token::END_LIST << nl;
-        IOobject::writeEndDivider(os);
-        if (!os.good())
+        FatalErrorInFunction
+            << "Cloud " << set.name() << ": " << where.cell.size()
+            << " cells for " << n << " particles" << abort(FatalError);
+    }
+    const bool located = (where.coordinates.size() == n && n > 0);
+
+    // Positions in the legacy format every lagrangian reader understands,
+    // and OpenFOAM's own coordinates (always ascii, at full precision)
+    auto open = [&](const word& name, autoPtr<OFstream>& os)
+    {
+        const IOobject io(cloudObject(name, runTime, timeName, set.name()));
+        const IOobject header
+        (
+            cloudObject
+            (
+                name, runTime, atomicTimeWriter::timeOf(timeName), set.name()
+            )
+        );
+        mkDir(io.path());
+        os.reset(new OFstream(io.objectPath(), IOstream::ASCII));
+        os().precision(max(os().precision(), restartPrecision));
+        header.writeHeader(os(), "Cloud<passiveParticle>");
+        os() << n << nl << token::BEGIN_LIST << nl;
+    };
+    auto close = [](autoPtr<OFstream>& os)
+    {
+        os() << token::END_LIST << nl;
+        IOobject::writeEndDivider(os());
+        if (!os().good())
         {
             FatalErrorInFunction
-                << "Failed writing " << os.name() << exit(FatalError);
+                << "Failed writing " << os().name() << exit(FatalError);
         }
+        os.clear();
+    };
+
+    pointField exact(n);
+    {
+        autoPtr<OFstream> os;
+        open(particleSet::positionsName, os);
+        for (label i = 0; i < n; ++i)
+        {
+            exact[i] =
+                point(x(i, 0), x(i, 1), dim == 3 ? x(i, 2) : zPlane);
+            os() << exact[i] << token::SPACE << where.cell[i] << nl;
+        }
+        close(os);
     }
+    if (located || n == 0)
+    {
+        autoPtr<OFstream> os;
+        open("coordinates", os);
+        for (label i = 0; i < n; ++i)
+        {
+            os() << where.coordinates[i] << token::SPACE << where.cell[i]
+                << token::SPACE << where.tetFace[i] << token::SPACE
+                << where.tetPt[i] << nl;
+        }
+        close(os);
+    }
+    writeList(exactPositionName, exact, runTime, timeName, set.name());
 
     {
         labelList ids(n);
@@ -440,7 +548,12 @@ void Foam::meshless::lagrangianIO::write
 
     for (const word& name : set.fieldNames())
     {
-        if (name != particleSet::positionsName && set.field(name).written())
+        if
+        (
+            name != particleSet::positionsName
+         && name != exactPositionName
+         && set.field(name).written()
+        )
         {
             writeField(set, name, runTime, timeName);
         }
@@ -482,70 +595,147 @@ void Foam::meshless::lagrangianIO::read
 {
     const label dim = set.dim();
 
-    IOobject posIO
+    IOobjectList objects(runTime, timeName, cloudLocal(set.name()));
+    const IOobject* exactIO = objects.findObject(exactPositionName);
+    const fileName posFile
     (
-        cloudObject
-        (
-            particleSet::positionsName,
-            runTime,
-            timeName,
-            set.name(),
-            IOobject::MUST_READ
-        )
+        cloudObject(particleSet::positionsName, runTime, timeName, set.name())
+        .objectPath()
     );
-    const fileName posFile(posIO.objectPath());
-    IFstream is(posFile);
-    if (!is.good())
-    {
-        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, posFile)
-            << "Cannot open the positions of cloud " << set.name()
-            << " at time " << timeName << ": expected a readable file"
-            << exit(FatalIOError);
-    }
-    if (!posIO.readHeader(is))
-    {
-        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, posFile)
-            << "Cannot read the header of the positions of cloud "
-            << set.name() << " at time " << timeName << " (empty or"
-            << " truncated?): expected a FoamFile header of class "
-            << "Cloud<passiveParticle>" << exit(FatalIOError);
-    }
+    const bool readPositions =
+        !exactIO || isFile(posFile) || isFile(posFile + ".gz");
 
-    // Every token checked, so that a truncated or damaged file says where
-    // it ends instead of failing in the parser or reading garbage
-    const label n = readPositionsCount(is, posFile);
-    set.resize(n);
-    particleField& x = set.positions();
-    for (label i = 0; i < n; ++i)
+    label n = 0;
+    if (readPositions)
     {
-        expectPunctuation(is, posFile, token::BEGIN_LIST, i, n, "'('");
-        vector p;
-        for (direction d = 0; d < vector::nComponents; ++d)
+        IOobject posIO
+        (
+            cloudObject
+            (
+                particleSet::positionsName,
+                runTime,
+                timeName,
+                set.name(),
+                IOobject::MUST_READ
+            )
+        );
+
+        IFstream is(posFile);
+        if (!is.good())
         {
-            p[d] = readPositionNumber(is, posFile, i, n, "a coordinate")
-                .number();
+            FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, posFile)
+                << "Cannot open the positions of cloud " << set.name()
+                << " at time " << timeName << ": expected a readable file"
+                << exit(FatalIOError);
+        }
+        if (!posIO.readHeader(is))
+        {
+            FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, posFile)
+                << "Cannot read the header of the positions of cloud "
+                << set.name() << " at time " << timeName << " (empty or"
+                << " truncated?): expected a FoamFile header of class "
+                << "Cloud<passiveParticle>" << exit(FatalIOError);
+        }
+
+        // Every token checked, so that a truncated or damaged file says where
+        // it ends instead of failing in the parser or reading garbage
+        n = readPositionsCount(is, posFile);
+        set.resize(n);
+        particleField& x = set.positions();
+        const bool binary = (is.format() == IOstream::BINARY);
+        if (binary && (!is.checkLabelSize<>() || !is.checkScalarSize<>()))
+        {
+            FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, posFile)
+                << "Binary positions of cloud " << set.name() << " with labels"
+                << " of " << is.labelByteSize() << " and scalars of "
+                << is.scalarByteSize() << " bytes: expected this build's "
+                << sizeof(label) << " and " << sizeof(scalar) << " bytes (or"
+                << " ascii)" << exit(FatalIOError);
+        }
+        for (label i = 0; i < n; ++i)
+        {
+            vector p;
+            if (binary)
+            {
+                // OpenFOAM's binary positions: (x y z celli) packed
+                char buf[sizeof(vector) + sizeof(label)];
+                is.read(buf, sizeof(buf));
+                if (!is.good())
+                {
+                    FatalIOError
+                    (
+                        FUNCTION_NAME, __FILE__, __LINE__, posFile,
+                        is.lineNumber()
+                    )   << "Particle " << i << " of " << n << ": cannot read its"
+                        << " binary position and cell (the file is truncated or"
+                        << " damaged)" << exit(FatalIOError);
+                }
+                std::memcpy(p.data(), buf, sizeof(vector));
+            }
+            else
+            {
+                expectPunctuation(is, posFile, token::BEGIN_LIST, i, n, "'('");
+                for (direction d = 0; d < vector::nComponents; ++d)
+                {
+                    p[d] = readPositionNumber(is, posFile, i, n, "a coordinate")
+                        .number();
+                }
+                expectPunctuation
+                (
+                    is, posFile, token::END_LIST, i, n,
+                    "')' after three coordinates"
+                );
+                if
+                (
+                    !readPositionNumber(is, posFile, i, n, "a cell label")
+                    .isLabel()
+                )
+                {
+                    FatalIOError
+                    (
+                        FUNCTION_NAME, __FILE__, __LINE__, posFile,
+                        is.lineNumber()
+                    )   << "Particle " << i << " of " << n << ": expected a cell"
+                        << " label (an integer, -1) after the position"
+                        << exit(FatalIOError);
+                }
+            }
+            for (label d = 0; d < dim; ++d) x(i, d) = p[d];
         }
         expectPunctuation
         (
-            is, posFile, token::END_LIST, i, n, "')' after three coordinates"
+            is, posFile, token::END_LIST, n, n, "')' closing the list"
         );
-        if (!readPositionNumber(is, posFile, i, n, "a cell label").isLabel())
+
+    }
+
+    // The exact positions, when written: OpenFOAM's utilities round the
+    // positions file's and write none of the project's (see the header)
+    if (exactIO)
+    {
+        const autoPtr<IOField<vector>> pExact
+        (
+            readIOField<vector>(*exactIO, set.name())
+        );
+        const IOField<vector>& exact = pExact();
+        if (readPositions && exact.size() != n)
         {
             FatalIOError
             (
-                FUNCTION_NAME, __FILE__, __LINE__, posFile, is.lineNumber()
-            )   << "Particle " << i << " of " << n << ": expected a cell"
-                << " label (an integer, -1) after the position"
-                << exit(FatalIOError);
+                FUNCTION_NAME, __FILE__, __LINE__, exact.objectPath()
+            )   << "Field " << exactPositionName << " of cloud " << set.name()
+                << " has " << exact.size() << " entries, the cloud has " << n
+                << " particles (its positions): expected " << n
+                << " entries, one per particle" << exit(FatalIOError);
         }
-        for (label d = 0; d < dim; ++d) x(i, d) = p[d];
+        n = exact.size();
+        set.resize(n);
+        particleField& x = set.positions();
+        for (label i = 0; i < n; ++i)
+        {
+            for (label d = 0; d < dim; ++d) x(i, d) = exact[i][d];
+        }
     }
-    expectPunctuation
-    (
-        is, posFile, token::END_LIST, n, n, "')' closing the list"
-    );
-
-    IOobjectList objects(runTime, timeName, cloudLocal(set.name()));
 
     const IOobject* idIO = objects.findObject("id");
     if (idIO)

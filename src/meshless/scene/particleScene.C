@@ -40,6 +40,17 @@ Foam::meshless::particleScene::particleScene(const polyMesh& mesh)
     writeCost_(costs_.part("write")),
     vtp_(dict_.getOrDefault<bool>("vtp", false))
 {
+    if (Pstream::parRun())
+    {
+        FatalErrorInFunction
+            << "Parallel runs (-parallel) are not supported yet: the bodies'"
+            << " particles do not exchange halos across processor"
+            << " boundaries, so each processor would run its part of the"
+            << " case alone. Run the solver on the undecomposed case"
+            << " (decomposePar and reconstructPar carry the clouds)"
+            << exit(FatalError);
+    }
+
     if (dim_ == 2 && mesh.solutionD()[vector::Z] != -1)
     {
         FatalErrorInFunction
@@ -416,7 +427,14 @@ void Foam::meshless::particleScene::writeState()
     forAll(bodies_, i)
     {
         const particleBody& b = bodies_[i];
-        lagrangianIO::write(b.particles(), runTime, runTime.timeName(), zPlane_);
+        lagrangianIO::write
+        (
+            b.particles(),
+            runTime,
+            runTime.timeName(),
+            zPlane_,
+            lagrangianIO::locate(b.particles(), mesh_, zPlane_)
+        );
         b.model().write(runTime, runTime.timeName());
         sets.set(i, &b.particles());
     }

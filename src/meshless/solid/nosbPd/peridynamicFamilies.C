@@ -5,7 +5,11 @@
 #include "peridynamicFamilies.H"
 #include "pairLoop.H"
 #include "lagrangianIO.H"
+#include "atomicTimeWriter.H"
 #include "labelPair.H"
+#include "labelFieldIOField.H"
+#include "SubList.H"
+#include "IOField.H"
 #include "OFstream.H"
 #include "IFstream.H"
 #include "OSspecific.H"
@@ -146,34 +150,51 @@ void Foam::meshless::peridynamicFamilies::writeBroken
 ) const
 {
     const std::vector<label>& ids = set.ids();
-    DynamicList<labelPair> pairs;
+    List<labelField> partners(size());
     for (label i = 0; i < size(); ++i)
     {
+        label nb = 0;
         for (label b = begin(i); b < end(i); ++b)
         {
-            const label j = neighbour(b);
-            if (!intact_[b] && ids[i] < ids[j])
-            {
-                pairs.append(labelPair(ids[i], ids[j]));
-            }
+            if (!intact_[b]) ++nb;
+        }
+        labelField& p = partners[i];
+        p.setSize(nb);
+        nb = 0;
+        for (label b = begin(i); b < end(i); ++b)
+        {
+            if (!intact_[b]) p[nb++] = ids[neighbour(b)];
         }
     }
 
-    IOobject io
-    (
-        brokenBondsName,
-        timeName,
-        lagrangianIO::cloudLocal(set.name()),
-        runTime,
-        IOobject::NO_READ,
-        IOobject::NO_WRITE,
-        false
-    );
+    // Written directly (the header naming the time it stands for, not the
+    // temporary directory of an atomic write)
+    auto object = [&](const word& instance)
+    {
+        return IOobject
+        (
+            brokenBondsName,
+            instance,
+            lagrangianIO::cloudLocal(set.name()),
+            runTime,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        );
+    };
+    const IOobject io(object(timeName));
     mkDir(io.path());
-    OFstream os(io.objectPath());
-    io.writeHeader(os, "labelPairList");
-    os  << "// Broken bonds of the peridynamic body: particle id pairs" << nl
-        << pairs << nl;
+    OFstream os
+    (
+        io.objectPath(),
+        runTime.writeFormat(),
+        IOstream::currentVersion,
+        runTime.writeCompression()
+    );
+    object(atomicTimeWriter::timeOf(timeName))
+        .writeHeader(os, labelFieldIOField::typeName);
+    os  << "// Broken bonds: per particle, the ids of the particles its"
+        << " broken bonds joined" << nl << partners << nl;
     IOobject::writeEndDivider(os);
     if (!os.good())
     {
@@ -190,10 +211,9 @@ Foam::label Foam::meshless::peridynamicFamilies::readBroken
     const word& timeName
 )
 {
-    const fileName path =
-        runTime.path()/timeName/lagrangianIO::cloudLocal(set.name())
-       /brokenBondsName;
-    if (!isFile(path)) return 0;
+    const fileName dir(runTime.path()/timeName/lagrangianIO::cloudLocal(set.name()));
+    const fileName path(dir/brokenBondsName);
+    if (!isFile(path) && !isFile(path + ".gz")) return 0;
 
     IFstream is(path);
     IOobject io
@@ -208,12 +228,99 @@ Foam::label Foam::meshless::peridynamicFamilies::readBroken
         FatalIOErrorInFunction(is)
             << "Cannot read the header of " << path << exit(FatalIOError);
     }
-    const List<labelPair> pairs(is);
+
+    // (id, id) pairs: per particle of the file, its broken partners (the
+    // file's particles are its cloud's, in the order of the cloud's ids);
+    // the pairs of labelPairList files of earlier versions as they are
+    List<labelPair> pairs;
+    const word& cls = io.headerClassName();
+    if
+    (
+        cls == labelFieldIOField::typeName
+     || cls == labelFieldCompactIOField::typeName
+    )
+    {
+        // OpenFOAM's utilities write the compact form (offsets and values)
+        // in binary
+        List<labelField> partners;
+        if (cls == labelFieldIOField::typeName)
+        {
+            is >> partners;
+        }
+        else
+        {
+            const labelList offsets(is);
+            const labelList values(is);
+            bool ok = !offsets.empty() && offsets.first() == 0
+                && offsets.last() == values.size();
+            for (label k = 1; ok && k < offsets.size(); ++k)
+            {
+                ok = offsets[k] >= offsets[k - 1];
+            }
+            if (!ok)
+            {
+                FatalIOErrorInFunction(is)
+                    << path << ": the offsets of its compact lists do not"
+                    << " run from 0 up to its " << values.size()
+                    << " values: expected " << cls << " as OpenFOAM writes"
+                    << " it" << exit(FatalIOError);
+            }
+            partners.setSize(offsets.size() - 1);
+            forAll(partners, k)
+            {
+                partners[k] = SubList<label>
+                (
+                    values, offsets[k + 1] - offsets[k], offsets[k]
+                );
+            }
+        }
+        const IOField<label> fileIds
+        (
+            IOobject
+            (
+                "id",
+                timeName,
+                lagrangianIO::cloudLocal(set.name()),
+                runTime,
+                IOobject::MUST_READ,
+                IOobject::NO_WRITE,
+                false
+            )
+        );
+        if (fileIds.size() != partners.size())
+        {
+            FatalIOErrorInFunction(is)
+                << path << " has " << partners.size() << " entries, the"
+                << " cloud's id field " << fileIds.size() << ": expected an"
+                << " entry per particle of the cloud" << exit(FatalIOError);
+        }
+        DynamicList<labelPair> found;
+        forAll(partners, k)
+        {
+            for (const label j : partners[k])
+            {
+                found.append(labelPair(fileIds[k], j));
+            }
+        }
+        pairs.transfer(found);
+    }
+    else if (io.headerClassName() == "labelPairList")
+    {
+        is >> pairs;
+    }
+    else
+    {
+        FatalIOErrorInFunction(is)
+            << path << " is of class " << io.headerClassName() << ": expected "
+            << labelFieldIOField::typeName << " (per particle the ids of its"
+            << " broken partners)" << exit(FatalIOError);
+    }
 
     std::unordered_map<label, label> index;
     const std::vector<label>& ids = set.ids();
     for (label i = 0; i < set.size(); ++i) index[ids[i]] = i;
 
+    label nPairs = 0;
     for (const labelPair& p : pairs)
     {
         const auto a = index.find(p.first());
@@ -239,8 +346,10 @@ Foam::label Foam::meshless::peridynamicFamilies::readBroken
                 << " than the horizon in the reference configuration)"
                 << exit(FatalIOError);
         }
+        // Each pair once: the new files list it from both particles
+        if (p.first() < p.second()) ++nPairs;
     }
-    return pairs.size();
+    return nPairs;
 }
 
 

@@ -42,12 +42,15 @@ TANK = 0.584           # the tank's width and the height of its walls (open top)
 
 
 def broken_pairs(case, name):
-    """The broken bonds at a time as a set of (id, id), smaller id first."""
+    """The broken bonds at a time as a set of (id, id), smaller id first
+    (brokenBonds lists per particle the ids its broken bonds joined)."""
     path = os.path.join(case, name, "lagrangian", "obstacle", "brokenBonds")
     if not os.path.exists(path):
         return set()
-    return set((int(a), int(b))
-               for a, b in read_field(case, name, "obstacle", "brokenBonds"))
+    ids = read_field(case, name, "obstacle", "id")
+    partners = read_field(case, name, "obstacle", "brokenBonds")
+    return set((min(int(i), int(j)), max(int(i), int(j)))
+               for i, js in zip(ids, partners) for j in js)
 
 
 def largest_intact_stretch(cloud, broken, horizon):
