@@ -52,6 +52,41 @@ def momentum_exchange(case, floor=None):
     return worst
 
 
+def solid_work_balance(case, solid):
+    """Largest rise of a solid's energy (kinetic + strain + potential, the
+    energy monitor) beyond the work the fluid's force did on it (forces.dat's
+    <solid>:work), from each run's start (a restart's work starts at zero):
+    above zero the solid's own integration, not the coupling, made energy.
+    Returns (rise [J/m in 2D], largest |work|), or None without both."""
+    try:
+        energy = monitor_runs(case, "energy")
+        forces = monitor_runs(case, "coupling", "forces.dat")
+    except RuntimeError:
+        return None
+    worst, scale = -float("inf"), 0.0
+    for (ec, er), (fc, fr) in zip(energy, forces):
+        key = solid + ":work"
+        if key not in fc or solid + ":kinetic" not in ec:
+            return None
+        kw = fc.index(key)
+        ke = [ec.index(solid + ":" + c)
+              for c in ("kinetic", "strain", "potential")]
+        work = {round(r[0], 12): r[kw] for r in fr}
+        start = None
+        for r in er:
+            w = work.get(round(r[0], 12))
+            if w is None:
+                continue
+            e = sum(r[k] for k in ke)
+            if start is None:
+                start = e - w
+            worst = max(worst, e - w - start)
+            scale = max(scale, abs(w))
+    if worst == -float("inf"):
+        return None
+    return worst, scale
+
+
 def energy_total(case):
     """The energy monitor's total over a run and its restarts. A restart's
     monitor measures potential energy from the restart's own positions (it

@@ -24,7 +24,10 @@ Applies fsiChecks' stability checks (run to the end, no particle lost,
 water in the tank below its walls' top and not in the plate, energy not
 growing, the plate's particle-scale velocity noise below 0.1 sqrt(g H)),
 the coupling's momentum balance (the water's force on the plate and
-the plate's on the water cancel to 1e-9 of it at every step), and that
+the plate's on the water cancel to 1e-9 of it at every step), that the
+plate's energy never rises above the work the water's force did on it
+(by more than 1e-3 of the column's potential energy: the solid's own
+integration makes none; postProcessing/coupling's work column), and that
 the plate, which folds onto the floor, stays out of it: no plate particle
 outside the notch reaches more than half its spacing into the floor (its
 own extent half a spacing, so its centre no lower than 0).
@@ -40,7 +43,7 @@ from foamMonitor import (arguments, case_spacing, pyplot, read_monitor,
                          result_suffix, run_cost)
 from foamCloud import read_positions, times
 from fsiChecks import (check_rows, momentum_exchange, print_checks,
-                       stability_checks)
+                       solid_work_balance, stability_checks)
 from solverComparison import (cost_rows, plot_comparison, resample,
                               write_history)
 
@@ -51,6 +54,7 @@ WALLS_TOP = 0.6     # the walls' top: the tank is open above [m]
 NOTCH = (0.596, 0.6)  # the plate's foot, below the floor [m]
 IMPACT = 0.001      # tip x that marks the impact [m]
 SAMPLE = 0.002      # interval of tip.dat [s]
+ENERGY_TOLERANCE = 1e-3  # of the column's potential energy (fsiChecks')
 
 
 def figures(ts, xs):
@@ -112,13 +116,20 @@ def validate(here, solver, default_dx, fluid_ratio=1, doc=None):
         print(line)
 
     # potential energy of the column: rho g H^2 W / 2 [J/m]
+    potential = 1000 * 9.81 * H ** 2 * W / 2
     checks = stability_checks(case, "plate", TANK, fluid_ratio * dx,
-                              1000 * 9.81 * H ** 2 * W / 2,
+                              potential,
                               velocity_scale=math.sqrt(9.81 * H),
                               walls_top=WALLS_TOP, solid_dx=dx)
     overlap = floor_overlap(case, dx)
     checks.append(("the plate out of the floor (deepest overlap %.2f dx"
                    " <= 0.5 dx)" % (overlap / dx), overlap <= 0.5 * dx))
+    work = solid_work_balance(case, "plate")
+    if work is not None:
+        checks.append(("the plate's energy never above the water's work on"
+                       " it (largest excess %.3g J/m <= %.3g)"
+                       % (work[0], ENERGY_TOLERANCE * potential),
+                       work[0] <= ENERGY_TOLERANCE * potential))
     balance = momentum_exchange(case, floor=1e-6)
     checks.append(("the water's force on the plate and the plate's on the"
                    " water cancel (largest |F_fs + F_sf|/|F_fs| %.1e"

@@ -15,9 +15,9 @@ at 2.5 mm), to 0.15 s: the gate's opening and its largest x (0.117 s).
   measured) and at most 5 steps at maxIterations (4 measured, the gate's
   release in the first steps);
 - the same scene without the sub-iterations (the staggered exchange) runs,
-  but the gate's release puts energy into the system: the total rises by
-  more than the stability check allows (0.0096 J/m; 0.106 J/m measured to
-  0.4 s, the iterated run's 0.0009 J/m).
+  but the gate's release puts energy into the system: to 0.15 s its total
+  energy rises STAGGERED_GAIN times as much as the iterated run's at least
+  (ENERGY_RE measured the two rises).
 """
 import os
 import re
@@ -31,6 +31,12 @@ from fsiChecks import momentum_exchange  # noqa: E402
 
 TUTORIAL = "tutorials/isphTlsphFoam/elasticGate"
 PUBLISHED_X = 0.0083    # Khayyer 2018's x RMS over the whole record
+# The staggered run's energy rise over the iterated run's, at least: 0.0094
+# against 0.0009 J/m measured (before the structure's wall contact stopped
+# giving water the gate's speed, 0.106 J/m staggered to 0.4 s)
+STAGGERED_GAIN = 3
+ENERGY_RE = (r"total energy not growing \(largest rise ([0-9.e+-]+)"
+             r" J/m <= ([0-9.e+-]+)\)")
 
 
 def validation_lines(out):
@@ -70,6 +76,9 @@ def gate(t, work):
     met, missed = validation_lines(out)
     t.check("validation: stability checks met (%d)" % len(met),
             met and not missed, "\n".join(missed) or out[-1500:])
+    iterated = re.search(ENERGY_RE, out)
+    t.check("iterated: the energy check printed", iterated is not None,
+            out[-1500:])
     m = re.search(r"RMS of free-end x\(t\) vs Antoci 2007: ([0-9.]+) m over"
                   r" (\d+) points", out)
     t.check("validation: x RMS printed", m is not None, out[-1500:])
@@ -102,13 +111,14 @@ def gate(t, work):
         return
     code, out = run(["/usr/bin/python3", "validation/validate.py", "."],
                     case)
-    e = re.search(r"total energy not growing \(largest rise ([0-9.e+-]+)"
-                  r" J/m <= ([0-9.e+-]+)\)", out)
+    e = re.search(ENERGY_RE, out)
     t.check("staggered: the energy check printed", e is not None, out[-1500:])
-    if e:
-        t.check("staggered: the total energy rises by %s J/m, above the"
-                " check's %s (the iterated run's met)" % e.groups(),
-                float(e.group(1)) > float(e.group(2)))
+    if e and iterated:
+        rise, own = float(e.group(1)), float(iterated.group(1))
+        t.check("staggered: the total energy rises by %.3g J/m, at least %g"
+                " times the iterated run's %.3g J/m"
+                % (rise, STAGGERED_GAIN, own),
+                rise > 0 and rise >= STAGGERED_GAIN * max(own, 0.0))
 
 if __name__ == "__main__":
     sys.exit(run_parts("isphElasticGate", gate))

@@ -45,6 +45,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include <gtest/gtest.h>
+#include <random>
 #include "testHelpers.H"
 #include "isphEquations.H"
 #include "correctionMatrix.H"
@@ -533,6 +534,101 @@ TEST(isphEquations, wallContactSkipsParticlesOffTheFace)
     );
     EXPECT_DOUBLE_EQ(U[0], 0.3);
     EXPECT_EQ(U[1], 0.0);
+}
+
+
+TEST(isphEquations, wallContactOnAStructureGivesNoSpeed)
+{
+    // A structure's contact surface (normals (0, -1) into it below y = 0),
+    // which the contact does not push back: a surface particle's normal
+    // velocity a goes to the value nearest zero between the face's b and a
+    // (isphEquations::wallContact, structure true). Cases (a, b):
+    //  0: face coming at 0.2, particle coming at 0.5: stops (0), is not
+    //     given the face's speed (a ghost wall would give it 0.2 upwards);
+    //  1: face coming at 0.2, particle leaving at 0.1: kept;
+    //  2: face receding at 0.3, particle coming at 0.5: the face's 0.3, as
+    //     a ghost wall.
+    // Then, over random a and b, the kinetic energy never grows.
+    using namespace Foam::meshless;
+    const double dx = 0.01;
+    std::vector<double> wall, n, depth;
+    for (int i = -12; i <= 12; ++i)
+    {
+        for (int k = 0; k < 3; ++k)
+        {
+            wall.push_back(i*dx);
+            wall.push_back(-(k + 0.5)*dx);
+            n.push_back(0);
+            n.push_back(k == 0 ? -1 : 0);
+            depth.push_back(0.5*dx);
+        }
+    }
+    const std::vector<double> fluid =
+        {-0.06, 0.003, 0.0, 0.003, 0.06, 0.003};
+    const std::vector<double> alpha = {0, 0, 0};
+
+    meshlessTest::pairFixture fx(2);
+    fx.addBody(fluid, dx*dx);
+    fx.addBody(wall, dx*dx);
+    autoPtr<smoothingKernel> W(meshlessTest::kernel(2, dx, spline));
+    const neighbourRelation& rel = fx.relate(0, 1, *W);
+
+    // The face's velocity per particle's region: x < -0.03, |x| <= 0.03,
+    // x > 0.03
+    auto faceVelocities = [&](const double b0, const double b1, const double b2)
+    {
+        std::vector<double> Uw;
+        for (size_t s = 0; s < depth.size(); ++s)
+        {
+            const double x = wall[2*s];
+            const double b = x < -0.03 ? b0 : x > 0.03 ? b2 : b1;
+            Uw.push_back(0.05);
+            Uw.push_back(-b);           // u_s . n_s = b
+        }
+        return Uw;
+    };
+    {
+        const std::vector<double> Uw = faceVelocities(-0.2, -0.2, 0.3);
+        std::vector<double> U = {0.3, -0.5, 0.3, 0.1, 0.3, -0.5};
+        const label held = isphEquations::wallContact<2>
+        (
+            rel, n.data(), depth.data(), Uw.data(), 0.5*dx, alpha.data(),
+            U.data(), true
+        );
+        EXPECT_EQ(held, 2);
+        EXPECT_DOUBLE_EQ(U[0], 0.3);
+        EXPECT_EQ(U[1], 0.0);
+        EXPECT_DOUBLE_EQ(U[3], 0.1);
+        EXPECT_DOUBLE_EQ(U[4], 0.3);
+        EXPECT_NEAR(U[5], -0.3, 1e-15);
+
+        // The same as a ghost wall: particle 0 is given the face's speed
+        std::vector<double> Ug = {0.3, -0.5, 0.3, 0.1, 0.3, -0.5};
+        isphEquations::wallContact<2>
+        (
+            rel, n.data(), depth.data(), Uw.data(), 0.5*dx, alpha.data(),
+            Ug.data()
+        );
+        EXPECT_NEAR(Ug[1], 0.2, 1e-15);
+    }
+
+    std::mt19937 gen(7);
+    std::uniform_real_distribution<double> r(-1, 1);
+    for (int trial = 0; trial < 200; ++trial)
+    {
+        const std::vector<double> Uw = faceVelocities(r(gen), r(gen), r(gen));
+        std::vector<double> U(6);
+        for (double& u : U) u = r(gen);
+        double before = 0, after = 0;
+        for (const double u : U) before += u*u;
+        isphEquations::wallContact<2>
+        (
+            rel, n.data(), depth.data(), Uw.data(), 0.5*dx, alpha.data(),
+            U.data(), true
+        );
+        for (const double u : U) after += u*u;
+        EXPECT_LE(after, before + 1e-15) << "trial " << trial;
+    }
 }
 
 

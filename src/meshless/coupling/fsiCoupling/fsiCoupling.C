@@ -116,14 +116,22 @@ void Foam::meshless::fsiCoupling::writeForces
         forces_.reset(new OFstream(dir/"forces.dat"));
         OFstream& os = forces_();
         os  << "# " << type() << " coupling: per solid, the fluid's force on"
-            << " the solid and the solid's force on the fluid (fluid's sum)"
-            << nl << "# time";
+            << " the solid and the solid's force on the fluid (fluid's sum);"
+            << " the sub-steps; per solid the work of the fluid's force on it"
+            << " since the run's start (sum F.dx)" << nl << "# time";
         for (const particleBody* s : solids)
         {
             os  << tab << s->name() << ":onSolid(x y z)" << tab
                 << s->name() << ":onFluid(x y z)";
         }
-        os  << tab << "subSteps" << endl;
+        os  << tab << "subSteps";
+        for (const particleBody* s : solids)
+        {
+            os  << tab << s->name() << ":work";
+        }
+        os  << endl;
+        work_.assign(solids.size(), 0);
+        workPositions_.assign(solids.size(), std::vector<double>());
     }
     OFstream& os = forces_();
     os  << t;
@@ -134,7 +142,26 @@ void Foam::meshless::fsiCoupling::writeForces
         for (direction d = 0; d < 3; ++d) os << tab << onSolid[d];
         for (direction d = 0; d < 3; ++d) os << tab << onFluid[d];
     }
-    os  << tab << nSub << endl;
+    os  << tab << nSub;
+    forAll(solids, k)
+    {
+        const particleField& x = solids[k]->particles().positions();
+        const particleField& f = solids[k]->model().solid()->externalForce();
+        const size_t m = size_t(x.size())*x.nComponents();
+        std::vector<double>& x0 = workPositions_[k];
+        if (x0.size() == m)
+        {
+            scalar w = 0;
+            for (size_t c = 0; c < m; ++c)
+            {
+                w += f.data()[c]*(x.data()[c] - x0[c]);
+            }
+            work_[k] += w;
+        }
+        x0.assign(x.data(), x.data() + m);
+        os  << tab << work_[k];
+    }
+    os  << endl;
 }
 
 

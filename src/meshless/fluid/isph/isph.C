@@ -858,11 +858,13 @@ void Foam::meshless::bodyModels::isph::advanceDim
             {
                 const ghostBoundary& g = *b.ghosts;
                 if (!g.contactNormals() || !g.contactDepth()) continue;
+                // A coupled structure (it takes the fluid's reaction)
                 isphEquations::wallContact<Dim>
                 (
                     *b.toGhosts, g.contactNormals(), g.contactDepth(),
                     g.U(), reach,
-                    alpha_.data(), U
+                    alpha_.data(), U,
+                    g.takesReaction()
                 );
             }
         }
