@@ -208,7 +208,9 @@ def stability_checks(case, solid, tank, dx, energy_scale, fluid="water",
       dam break's criterion: the first ghost layer lies at dx/2). With
       walls_top, the height where the side walls of an open tank end, only
       the particles below it: a splash may fly over the walls and land
-      beyond them, which no wall leaked; those above are counted;
+      beyond them, which no wall leaked; those above are counted, and so
+      are those below it beside the tank that were above it at a written
+      time (they flew over the walls);
     - no fluid particle closer than dx/4 to a solid particle at any written
       time (a fluid particle inside the solid);
     - the total energy (energy monitor, over a run and its restarts:
@@ -228,20 +230,36 @@ def stability_checks(case, solid, tank, dx, energy_scale, fluid="water",
                abs(t1 - end_time(case)) < 1e-9)]
 
     checks += written_times_checks(case, series, fluid, solid, dx)
-    fl = read_positions(case, series[-1][1], fluid)
+    last = read_cloud(case, series[-1][1], fluid)
+    fl = last["positions"]
     top = math.inf if walls_top is None else walls_top
     above = [p for p in fl if p[1] >= top]
-    depth = max((max(tank[0] - p[0], p[0] - tank[1], -p[1]) for p in fl
-                 if p[1] < top), default=0.0)
+    # Particles that flew over the walls: above their top at a written
+    # time, beside the tank below it at the last
+    flew = set()
+    if walls_top is not None:
+        for _, name in series:
+            c = read_cloud(case, name, fluid)
+            flew.update(i for i, p in zip(c["id"], c["positions"])
+                        if p[1] >= top)
+    landed = [p for i, p in zip(last["id"], fl) if p[1] < top
+              and i in flew and not tank[0] <= p[0] <= tank[1]]
+    depth = max((max(tank[0] - p[0], p[0] - tank[1], -p[1])
+                 for i, p in zip(last["id"], fl)
+                 if p[1] < top and not (i in flew
+                                        and not tank[0] <= p[0] <= tank[1])),
+                default=0.0)
     if walls_top is None:
         what = ("every %s particle inside the tank (deepest wall penetration"
                 " %.2f dx < 0.5 dx)" % (fluid, depth / dx))
     else:
         what = ("every %s particle below the walls' top (%g m) inside the"
                 " tank (deepest wall penetration %.2f dx < 0.5 dx); %d above"
-                " it (splash), %d of those beyond the side walls"
+                " it (splash), %d of those beyond the side walls; %d flew"
+                " over the walls and fell beside the tank"
                 % (fluid, walls_top, depth / dx, len(above),
-                   sum(1 for p in above if not tank[0] <= p[0] <= tank[1])))
+                   sum(1 for p in above if not tank[0] <= p[0] <= tank[1]),
+                   len(landed)))
     checks.append((what, depth < 0.5 * dx))
 
     total = energy_total(case)

@@ -470,6 +470,7 @@ int main(int argc, char *argv[])
         }
     }
 
+    const lagrangianIO::meshLocator locator(mesh);
     for (const auto& set : sets)
     {
         lagrangianIO::write
@@ -478,7 +479,7 @@ int main(int argc, char *argv[])
             runTime,
             runTime.timeName(),
             zPlane,
-            lagrangianIO::locate(*set, mesh, zPlane)
+            locator.locate(*set, zPlane)
         );
         Info<< "Written " << set->name() << " to "
             << (runTime.timeName()/lagrangianIO::cloudLocal(set->name())).c_str()

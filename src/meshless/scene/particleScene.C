@@ -423,6 +423,10 @@ void Foam::meshless::particleScene::writeState()
 {
     costAccounting::scope timer(costs_, writeCost_);
     const Time& runTime = mesh_.time();
+    if (!locator_.valid())
+    {
+        locator_.reset(new lagrangianIO::meshLocator(mesh_));
+    }
     UPtrList<const particleSet> sets(bodies_.size());
     forAll(bodies_, i)
     {
@@ -433,7 +437,7 @@ void Foam::meshless::particleScene::writeState()
             runTime,
             runTime.timeName(),
             zPlane_,
-            lagrangianIO::locate(b.particles(), mesh_, zPlane_)
+            locator_->locate(b.particles(), zPlane_)
         );
         b.model().write(runTime, runTime.timeName());
         sets.set(i, &b.particles());
