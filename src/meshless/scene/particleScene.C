@@ -443,6 +443,7 @@ void Foam::meshless::particleScene::writeState()
         sets.set(i, &b.particles());
     }
     monitor::writeStates(monitors_, runTime, runTime.timeName());
+    if (coupling_.valid()) coupling_->writeState(runTime.timeName());
     restartManifest::write(sets, runTime, runTime.timeName());
 }
 

@@ -8,6 +8,8 @@
 #include "fluidModel.H"
 #include "particleScene.H"
 #include "solidModel.H"
+#include "atomicTimeWriter.H"
+#include "IFstream.H"
 
 namespace Foam
 {
@@ -28,7 +30,14 @@ Foam::meshless::fsiCoupling::fsiCoupling
     dict_(dict),
     scene_(scene),
     maxCo_(0.25)
-{}
+{
+    // The solids' positions at the start (the clouds are read), and the
+    // work a restart continues
+    if (dict_.found("solids"))
+    {
+        startWork(solidBodies());
+    }
+}
 
 
 Foam::meshless::particleBody& Foam::meshless::fsiCoupling::fluidBody
@@ -130,8 +139,7 @@ void Foam::meshless::fsiCoupling::writeForces
             os  << tab << s->name() << ":work";
         }
         os  << endl;
-        work_.assign(solids.size(), 0);
-        workPositions_.assign(solids.size(), std::vector<double>());
+        startWork(solids);
     }
     OFstream& os = forces_();
     os  << t;
@@ -162,6 +170,61 @@ void Foam::meshless::fsiCoupling::writeForces
         os  << tab << work_[k];
     }
     os  << endl;
+}
+
+
+void Foam::meshless::fsiCoupling::startWork
+(
+    const UList<particleBody*>& solids
+)
+{
+    if (work_.size() == size_t(solids.size())) return;
+    work_.assign(solids.size(), 0);
+    workPositions_.assign(solids.size(), std::vector<double>());
+    forAll(solids, k)
+    {
+        const particleField& x = solids[k]->particles().positions();
+        workPositions_[k].assign
+        (
+            x.data(), x.data() + size_t(x.size())*x.nComponents()
+        );
+    }
+    const Time& runTime = scene_.time();
+    const fileName file
+    (
+        runTime.path()/runTime.timeName()/"uniform"/"coupling"
+    );
+    if (!isFile(file)) return;
+    IFstream is(file);
+    const dictionary state(is);
+    const dictionary* work = state.findDict("work");
+    forAll(solids, k)
+    {
+        if (work && work->found(solids[k]->name()))
+        {
+            work_[k] = work->get<scalar>(solids[k]->name());
+        }
+    }
+}
+
+
+void Foam::meshless::fsiCoupling::writeState(const word& instance) const
+{
+    if (work_.empty()) return;
+    const List<particleBody*> solids(solidBodies());
+    dictionary work;
+    forAll(solids, k)
+    {
+        if (size_t(k) < work_.size()) work.add(solids[k]->name(), work_[k]);
+    }
+    dictionary state;
+    state.add("work", work);
+    atomicTimeWriter::writeUniform
+    (
+        scene_.time(), instance, "coupling", state,
+        "// The work of the fluid's force on each solid since the run's"
+        " start (forces.dat),\n// which a restart continues"
+    );
 }
 
 
