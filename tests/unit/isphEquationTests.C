@@ -491,6 +491,36 @@ TEST(isphEquations, wallContactHoldsSurfaceParticlesApproachingAWall)
 }
 
 
+namespace
+{
+
+//- A structure's contact surface below y = 0 (deformingGhost::
+//  enableContact): 3 rows at spacing dx from x = -half dx to half dx, the
+//  surface row's normals (0, -1) into it, the inner rows' none (zero),
+//  every depth half a spacing
+struct contactSurface
+{
+    std::vector<double> x, n, depth;
+
+    contactSurface(const int half, const double dx)
+    {
+        for (int i = -half; i <= half; ++i)
+        {
+            for (int k = 0; k < 3; ++k)
+            {
+                x.push_back(i*dx);
+                x.push_back(-(k + 0.5)*dx);
+                n.push_back(0);
+                n.push_back(k == 0 ? -1 : 0);
+                depth.push_back(0.5*dx);
+            }
+        }
+    }
+};
+
+} // End anonymous namespace
+
+
 TEST(isphEquations, wallContactSkipsParticlesOffTheFace)
 {
     // A structure's contact surface (deformingGhost::enableContact): its
@@ -500,20 +530,11 @@ TEST(isphEquations, wallContactSkipsParticlesOffTheFace)
     // inner rows (nearer by x_is . 0 - depth) take no part
     using namespace Foam::meshless;
     const double dx = 0.01;
-    std::vector<double> wall, n, depth, Uw;
-    for (int i = -8; i <= 8; ++i)
-    {
-        for (int k = 0; k < 3; ++k)
-        {
-            wall.push_back(i*dx);
-            wall.push_back(-(k + 0.5)*dx);
-            n.push_back(0);
-            n.push_back(k == 0 ? -1 : 0);
-            depth.push_back(0.5*dx);
-            Uw.push_back(0);
-            Uw.push_back(0);
-        }
-    }
+    const contactSurface surface(8, dx);
+    const std::vector<double>& wall = surface.x;
+    const std::vector<double>& n = surface.n;
+    const std::vector<double>& depth = surface.depth;
+    const std::vector<double> Uw(wall.size(), 0.0);
     const std::vector<double> fluid = {0.0, 0.003};
     const std::vector<double> alpha = {0};
     std::vector<double> U = {0.3, -0.5};
@@ -551,18 +572,10 @@ TEST(isphEquations, wallContactOnAStructureGivesNoSpeed)
     // Then, over random a and b, the kinetic energy never grows.
     using namespace Foam::meshless;
     const double dx = 0.01;
-    std::vector<double> wall, n, depth;
-    for (int i = -12; i <= 12; ++i)
-    {
-        for (int k = 0; k < 3; ++k)
-        {
-            wall.push_back(i*dx);
-            wall.push_back(-(k + 0.5)*dx);
-            n.push_back(0);
-            n.push_back(k == 0 ? -1 : 0);
-            depth.push_back(0.5*dx);
-        }
-    }
+    const contactSurface surface(12, dx);
+    const std::vector<double>& wall = surface.x;
+    const std::vector<double>& n = surface.n;
+    const std::vector<double>& depth = surface.depth;
     const std::vector<double> fluid =
         {-0.06, 0.003, 0.0, 0.003, 0.06, 0.003};
     const std::vector<double> alpha = {0, 0, 0};

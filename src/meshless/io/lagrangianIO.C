@@ -5,6 +5,7 @@
 #include "lagrangianIO.H"
 #include "atomicTimeWriter.H"
 #include "IOField.H"
+#include "labelFieldIOField.H"
 #include "IOobjectList.H"
 #include "OFstream.H"
 #include "IFstream.H"
@@ -614,6 +615,19 @@ void Foam::meshless::lagrangianIO::write
             writeField(set, name, runTime, timeName);
         }
     }
+}
+
+
+void Foam::meshless::lagrangianIO::writeLabelLists
+(
+    const word& name,
+    const UList<labelField>& values,
+    const Time& runTime,
+    const word& timeName,
+    const word& body
+)
+{
+    writeList(name, values, runTime, timeName, body);
 }
 
 

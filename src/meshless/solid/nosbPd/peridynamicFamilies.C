@@ -167,40 +167,10 @@ void Foam::meshless::peridynamicFamilies::writeBroken
         }
     }
 
-    // Written directly (the header naming the time it stands for, not the
-    // temporary directory of an atomic write)
-    auto object = [&](const word& instance)
-    {
-        return IOobject
-        (
-            brokenBondsName,
-            instance,
-            lagrangianIO::cloudLocal(set.name()),
-            runTime,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        );
-    };
-    const IOobject io(object(timeName));
-    mkDir(io.path());
-    OFstream os
+    lagrangianIO::writeLabelLists
     (
-        io.objectPath(),
-        runTime.writeFormat(),
-        IOstream::currentVersion,
-        runTime.writeCompression()
+        brokenBondsName, partners, runTime, timeName, set.name()
     );
-    object(atomicTimeWriter::timeOf(timeName))
-        .writeHeader(os, labelFieldIOField::typeName);
-    os  << "// Broken bonds: per particle, the ids of the particles its"
-        << " broken bonds joined" << nl << partners << nl;
-    IOobject::writeEndDivider(os);
-    if (!os.good())
-    {
-        FatalErrorInFunction
-            << "Failed writing " << os.name() << exit(FatalError);
-    }
 }
 
 
