@@ -122,6 +122,8 @@ CASES = [
          " plate (1 s)", [
              Method("Riemann WCSPH + TLSPH",
                     "tutorials/riemannSphFoam/liaoPlate", ["-dx", "0.002"]),
+             Method("ISPH + TLSPH",
+                    "tutorials/isphTlsphFoam/liaoPlate", ["-dx", "0.002"]),
          ]),
     Case("rollingTankBaffle", "rolling tank with an elastic baffle"
          " (10 periods, 12.11 s)", [
