@@ -178,7 +178,7 @@ def read_cloud(case, time, body):
             continue
         out[name] = read_list(os.path.join(d, name))
     if "position" in out:
-        out["positions"] = out["position"]
+        out["positions"] = out.pop("position")
     if "id" in out:
         out["id"] = [int(v) for v in out["id"]]
     return out
