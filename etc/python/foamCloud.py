@@ -47,13 +47,15 @@ def _read_binary(path, raw):
     """A binary list file (IOField of labels, scalars or vectors): the
     count, '(' and the packed values"""
     head = raw[:raw.index(b"}", raw.index(b"FoamFile")) + 1].decode()
-    cls = re.search(r"class\s+(\w+);", head).group(1)
+    cls = re.search(r"class\s+([^;\s]+);", head).group(1)
     arch = re.search(r'arch\s+"([^"]*)"', head)
     arch = arch.group(1) if arch else "LSB;label=32;scalar=64"
     if cls == "labelFieldField":
         return _read_binary_label_lists(path, raw, head, arch)
     if cls == "labelFieldCompactField":
         return _read_binary_compact_label_lists(path, raw, head, arch)
+    if cls == "Cloud<passiveParticle>":
+        return _read_binary_cloud(path, raw, head, arch)
     if cls not in _COMPONENTS:
         raise ValueError("%s: binary %s not supported" % (path, cls))
     order = "<" if arch.startswith("LSB") else ">"
@@ -132,6 +134,30 @@ def _read_binary_compact_label_lists(path, raw, head, arch):
     offsets, values = lists
     return [values[offsets[k]:offsets[k + 1]]
             for k in range(len(offsets) - 1)]
+
+
+def _read_binary_cloud(path, raw, head, arch):
+    """A binary positions or coordinates file of a cloud, as OpenFOAM's
+    particle writes it: per particle '(' and its packed record ')':
+    positions (x y z) and the cell; coordinates (a b c d) and the cell, tet
+    face and tet point. Returns the points, [x, y, z] or [a, b, c, d]"""
+    obj = re.search(r"object\s+(\w+);", head).group(1)
+    order = "<" if arch.startswith("LSB") else ">"
+    bits = dict(re.findall(r"(label|scalar)=(\d+)", arch))
+    lcode, lsize = {"32": ("i", 4), "64": ("q", 8)}[bits.get("label", "32")]
+    scode, ssize = {"32": ("f", 4), "64": ("d", 8)}[bits.get("scalar", "64")]
+    ns, nl = (4, 3) if obj == "coordinates" else (3, 1)
+    record = order + scode * ns + lcode * nl
+    size = ns * ssize + nl * lsize
+    m = re.compile(rb"\n\s*(\d+)\s*\(").search(raw, len(head))
+    if m is None:
+        raise ValueError("no list in " + path)
+    n, pos, out = int(m.group(1)), m.end(), []
+    for _ in range(n):
+        pos = raw.index(b"(", pos) + 1
+        out.append(list(struct.unpack_from(record, raw, pos)[:ns]))
+        pos += size + 1
+    return out
 
 
 def read_list(path):

@@ -543,7 +543,12 @@ void Foam::meshless::lagrangianIO::write
 
     // Positions in the legacy format every lagrangian reader understands,
     // and OpenFOAM's own coordinates (always ascii, at full precision)
-    auto open = [&](const word& name, autoPtr<OFstream>& os)
+    auto open = [&]
+    (
+        const word& name,
+        autoPtr<OFstream>& os,
+        const IOstream::streamFormat format
+    )
     {
         const IOobject io(cloudObject(name, runTime, timeName, set.name()));
         const IOobject header
@@ -554,7 +559,7 @@ void Foam::meshless::lagrangianIO::write
             )
         );
         mkDir(io.path());
-        os.reset(new OFstream(io.objectPath(), IOstream::ASCII));
+        os.reset(new OFstream(io.objectPath(), format));
         os().precision(max(os().precision(), restartPrecision));
         header.writeHeader(os(), "Cloud<passiveParticle>");
         os() << n << nl << token::BEGIN_LIST << nl;
@@ -574,7 +579,7 @@ void Foam::meshless::lagrangianIO::write
     pointField exact(n);
     {
         autoPtr<OFstream> os;
-        open(particleSet::positionsName, os);
+        open(particleSet::positionsName, os, IOstream::ASCII);
         for (label i = 0; i < n; ++i)
         {
             exact[i] =
@@ -585,13 +590,34 @@ void Foam::meshless::lagrangianIO::write
     }
     if (located || n == 0)
     {
+        // In writeFormat (they only place the particles in the mesh; the
+        // exact positions are the 'position' field's): binary as
+        // OpenFOAM's particle writes it, the barycentric coordinates and
+        // the cell, tet face and tet point packed
         autoPtr<OFstream> os;
-        open("coordinates", os);
+        const IOstream::streamFormat format = runTime.writeFormat();
+        open("coordinates", os, format);
+        char buf[sizeof(barycentric) + 3*sizeof(label)];
         for (label i = 0; i < n; ++i)
         {
-            os() << where.coordinates[i] << token::SPACE << where.cell[i]
-                << token::SPACE << where.tetFace[i] << token::SPACE
-                << where.tetPt[i] << nl;
+            if (format == IOstream::BINARY)
+            {
+                const label tet[3] =
+                    {where.cell[i], where.tetFace[i], where.tetPt[i]};
+                std::memcpy
+                (
+                    buf, where.coordinates[i].cdata(), sizeof(barycentric)
+                );
+                std::memcpy(buf + sizeof(barycentric), tet, sizeof(tet));
+                os().write(buf, sizeof(buf));
+                os() << nl;
+            }
+            else
+            {
+                os() << where.coordinates[i] << token::SPACE
+                    << where.cell[i] << token::SPACE << where.tetFace[i]
+                    << token::SPACE << where.tetPt[i] << nl;
+            }
         }
         close(os);
     }
