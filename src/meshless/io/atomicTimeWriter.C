@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "atomicTimeWriter.H"
+#include "IFstream.H"
 #include "OFstream.H"
 #include "OSspecific.H"
 #include "IOdictionary.H"
@@ -147,6 +148,40 @@ void Foam::meshless::atomicTimeWriter::writeUniform
         FatalErrorInFunction
             << "Failed writing " << os.name() << exit(FatalError);
     }
+}
+
+
+Foam::autoPtr<Foam::dictionary> Foam::meshless::atomicTimeWriter::readUniform
+(
+    const Time& runTime,
+    const word& timeName,
+    const word& name,
+    const char* expected
+)
+{
+    const fileName file(runTime.path()/timeName/"uniform"/name);
+    if (!isFile(file))
+    {
+        return nullptr;
+    }
+    IFstream is(file);
+    IOobject io
+    (
+        name,
+        timeName,
+        "uniform",
+        runTime,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+    if (!io.readHeader(is))
+    {
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file)
+            << "Cannot read the header of " << file << " (empty or"
+            << " truncated): expected " << expected << exit(FatalIOError);
+    }
+    return autoPtr<dictionary>::New(is);
 }
 
 

@@ -541,8 +541,9 @@ void Foam::meshless::lagrangianIO::write
     }
     const bool located = (where.coordinates.size() == n && n > 0);
 
-    // Positions in the legacy format every lagrangian reader understands,
-    // and OpenFOAM's own coordinates (always ascii, at full precision)
+    // A file of the cloud in OpenFOAM's Cloud layout: the positions (the
+    // legacy format every lagrangian reader understands) and OpenFOAM's own
+    // coordinates
     auto open = [&]
     (
         const word& name,

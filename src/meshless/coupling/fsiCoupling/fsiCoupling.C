@@ -9,7 +9,6 @@
 #include "particleScene.H"
 #include "solidModel.H"
 #include "atomicTimeWriter.H"
-#include "IFstream.H"
 
 namespace Foam
 {
@@ -33,10 +32,7 @@ Foam::meshless::fsiCoupling::fsiCoupling
 {
     // The solids' positions at the start (the clouds are read), and the
     // work a restart continues
-    if (dict_.found("solids"))
-    {
-        startWork(solidBodies());
-    }
+    startWork(solidBodies());
 }
 
 
@@ -139,7 +135,6 @@ void Foam::meshless::fsiCoupling::writeForces
             os  << tab << s->name() << ":work";
         }
         os  << endl;
-        startWork(solids);
     }
     OFstream& os = forces_();
     os  << t;
@@ -178,7 +173,6 @@ void Foam::meshless::fsiCoupling::startWork
     const UList<particleBody*>& solids
 )
 {
-    if (work_.size() == size_t(solids.size())) return;
     work_.assign(solids.size(), 0);
     workPositions_.assign(solids.size(), std::vector<double>());
     forAll(solids, k)
@@ -190,14 +184,16 @@ void Foam::meshless::fsiCoupling::startWork
         );
     }
     const Time& runTime = scene_.time();
-    const fileName file
+    const autoPtr<dictionary> state
     (
-        runTime.path()/runTime.timeName()/"uniform"/"coupling"
+        atomicTimeWriter::readUniform
+        (
+            runTime, runTime.timeName(), "coupling",
+            "the coupling's restart state, the work on each solid"
+        )
     );
-    if (!isFile(file)) return;
-    IFstream is(file);
-    const dictionary state(is);
-    const dictionary* work = state.findDict("work");
+    if (!state.valid()) return;
+    const dictionary* work = state->findDict("work");
     forAll(solids, k)
     {
         if (work && work->found(solids[k]->name()))

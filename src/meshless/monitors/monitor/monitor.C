@@ -107,29 +107,12 @@ const Foam::dictionary* Foam::meshless::monitor::restartState() const
     if (statesFile != file)
     {
         statesFile = file;
-        states.clear();
-        if (isFile(file))
-        {
-            IFstream is(file);
-            IOobject io
-            (
-                stateName,
-                runTime.timeName(),
-                "uniform",
-                runTime,
-                IOobject::MUST_READ,
-                IOobject::NO_WRITE,
-                false
-            );
-            if (!io.readHeader(is))
-            {
-                FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file)
-                    << "Cannot read the header of the monitors' restart"
-                    << " state (empty or truncated): expected a dictionary"
-                    << " with an entry per monitor" << exit(FatalIOError);
-            }
-            states.reset(new dictionary(is));
-        }
+        states = atomicTimeWriter::readUniform
+        (
+            runTime, runTime.timeName(), stateName,
+            "the monitors' restart state, a dictionary with an entry per"
+            " monitor"
+        );
     }
     return states.valid() ? states->findDict(name_) : nullptr;
 }
