@@ -43,27 +43,37 @@ _COMPONENTS = {"scalarField": 1, "labelField": 1, "vectorField": 3,
                "symmTensorField": 6, "tensorField": 9}
 
 
+class _Layout:
+    """The packing of a binary file, from its header's arch: the byte
+    order and the struct code and size of a label and of a scalar"""
+
+    def __init__(self, head):
+        arch = re.search(r'arch\s+"([^"]*)"', head)
+        arch = arch.group(1) if arch else "LSB;label=32;scalar=64"
+        self.order = "<" if arch.startswith("LSB") else ">"
+        bits = dict(re.findall(r"(label|scalar)=(\d+)", arch))
+        self.label, self.label_size = {"32": ("i", 4), "64": ("q", 8)}[
+            bits.get("label", "32")]
+        self.scalar, self.scalar_size = {"32": ("f", 4), "64": ("d", 8)}[
+            bits.get("scalar", "64")]
+
+
 def _read_binary(path, raw):
     """A binary list file (IOField of labels, scalars or vectors): the
     count, '(' and the packed values"""
     head = raw[:raw.index(b"}", raw.index(b"FoamFile")) + 1].decode()
     cls = re.search(r"class\s+([^;\s]+);", head).group(1)
-    arch = re.search(r'arch\s+"([^"]*)"', head)
-    arch = arch.group(1) if arch else "LSB;label=32;scalar=64"
+    layout = _Layout(head)
     if cls == "labelFieldField":
-        return _read_binary_label_lists(path, raw, head, arch)
+        return _read_binary_label_lists(path, raw, head, layout)
     if cls == "labelFieldCompactField":
-        return _read_binary_compact_label_lists(path, raw, head, arch)
+        return _read_binary_compact_label_lists(path, raw, head, layout)
     if cls == "Cloud<passiveParticle>":
-        return _read_binary_cloud(path, raw, head, arch)
+        return _read_binary_cloud(path, raw, head, layout)
     if cls not in _COMPONENTS:
         raise ValueError("%s: binary %s not supported" % (path, cls))
-    order = "<" if arch.startswith("LSB") else ">"
-    bits = dict(re.findall(r"(label|scalar)=(\d+)", arch))
-    if cls == "labelField":
-        code = {"32": "i", "64": "q"}[bits.get("label", "32")]
-    else:
-        code = {"32": "f", "64": "d"}[bits.get("scalar", "64")]
+    order = layout.order
+    code = layout.label if cls == "labelField" else layout.scalar
     # the count starts the first line after the header's comment lines;
     # binary lists are always N(bytes) (OpenFOAM writes N{value} only in
     # ascii), an empty one just 0
@@ -81,12 +91,10 @@ def _read_binary(path, raw):
     return [list(values[i * k:(i + 1) * k]) for i in range(n)]
 
 
-def _read_binary_label_lists(path, raw, head, arch):
+def _read_binary_label_lists(path, raw, head, layout):
     """A binary labelFieldField (per particle a list of labels): the count,
     '(' and per entry its length and, when not empty, its packed labels"""
-    order = "<" if arch.startswith("LSB") else ">"
-    bits = dict(re.findall(r"(label|scalar)=(\d+)", arch))
-    code, size = {"32": ("i", 4), "64": ("q", 8)}[bits.get("label", "32")]
+    order, code, size = layout.order, layout.label, layout.label_size
     m = re.compile(rb"\n\s*(\d+)\s*(\(|\n|$)").search(raw, len(head))
     if m is None:
         raise ValueError("no list in " + path)
@@ -112,12 +120,10 @@ def _read_binary_label_lists(path, raw, head, arch):
     return out
 
 
-def _read_binary_compact_label_lists(path, raw, head, arch):
+def _read_binary_compact_label_lists(path, raw, head, layout):
     """A binary labelFieldCompactField (what OpenFOAM's utilities write for
     a labelFieldField in binary): the offsets list, then the values list"""
-    order = "<" if arch.startswith("LSB") else ">"
-    bits = dict(re.findall(r"(label|scalar)=(\d+)", arch))
-    code, size = {"32": ("i", 4), "64": ("q", 8)}[bits.get("label", "32")]
+    order, code, size = layout.order, layout.label, layout.label_size
     lists, pos = [], len(head)
     count = re.compile(rb"\s*(?://[^\n]*\n\s*)*(\d+)\s*")
     for _ in range(2):
@@ -136,19 +142,15 @@ def _read_binary_compact_label_lists(path, raw, head, arch):
             for k in range(len(offsets) - 1)]
 
 
-def _read_binary_cloud(path, raw, head, arch):
+def _read_binary_cloud(path, raw, head, layout):
     """A binary positions or coordinates file of a cloud, as OpenFOAM's
     particle writes it: per particle '(' and its packed record ')':
     positions (x y z) and the cell; coordinates (a b c d) and the cell, tet
     face and tet point. Returns the points, [x, y, z] or [a, b, c, d]"""
     obj = re.search(r"object\s+(\w+);", head).group(1)
-    order = "<" if arch.startswith("LSB") else ">"
-    bits = dict(re.findall(r"(label|scalar)=(\d+)", arch))
-    lcode, lsize = {"32": ("i", 4), "64": ("q", 8)}[bits.get("label", "32")]
-    scode, ssize = {"32": ("f", 4), "64": ("d", 8)}[bits.get("scalar", "64")]
     ns, nl = (4, 3) if obj == "coordinates" else (3, 1)
-    record = order + scode * ns + lcode * nl
-    size = ns * ssize + nl * lsize
+    record = layout.order + layout.scalar * ns + layout.label * nl
+    size = ns * layout.scalar_size + nl * layout.label_size
     m = re.compile(rb"\n\s*(\d+)\s*\(").search(raw, len(head))
     if m is None:
         raise ValueError("no list in " + path)

@@ -10,7 +10,7 @@ and how they are reported.
 """
 import math
 
-from foamCloud import read_cloud, read_positions, times
+from foamCloud import read_cloud, read_field, read_positions, times
 from foamDict import dictionary_entry
 from foamMonitor import monitor_rows, monitor_runs
 
@@ -229,23 +229,27 @@ def stability_checks(case, solid, tank, dx, energy_scale, fluid="water",
     checks = [("ran to endTime %g s (last time %g s)" % (end_time(case), t1),
                abs(t1 - end_time(case)) < 1e-9)]
 
-    checks += written_times_checks(case, series, fluid, solid, dx)
-    last = read_cloud(case, series[-1][1], fluid)
-    fl = last["positions"]
     top = math.inf if walls_top is None else walls_top
-    above = [p for p in fl if p[1] >= top]
     # Particles that flew over the walls: above their top at a written
-    # time, beside the tank below it at the last
+    # time (on the pass of written_times_checks), beside the tank below it
+    # at the last
     flew = set()
-    if walls_top is not None:
-        for _, name in series:
-            c = read_cloud(case, name, fluid)
-            flew.update(i for i, p in zip(c["id"], c["positions"])
-                        if p[1] >= top)
-    landed = [p for i, p in zip(last["id"], fl) if p[1] < top
+
+    def over_the_top(value, name, positions):
+        above = [k for k, p in enumerate(positions) if p[1] >= top]
+        if above:
+            ids = read_field(case, name, fluid, "id")
+            flew.update(int(ids[k]) for k in above)
+
+    checks += written_times_checks(case, series, fluid, solid, dx,
+                                   visit=over_the_top)
+    fl = read_positions(case, series[-1][1], fluid)
+    ids = [int(i) for i in read_field(case, series[-1][1], fluid, "id")]
+    above = [p for p in fl if p[1] >= top]
+    landed = [p for i, p in zip(ids, fl) if p[1] < top
               and i in flew and not tank[0] <= p[0] <= tank[1]]
     depth = max((max(tank[0] - p[0], p[0] - tank[1], -p[1])
-                 for i, p in zip(last["id"], fl)
+                 for i, p in zip(ids, fl)
                  if p[1] < top and not (i in flew
                                         and not tank[0] <= p[0] <= tank[1])),
                 default=0.0)
