@@ -26,8 +26,8 @@ own continuation: the particles come back in another order, so sums run in
 another order (the obstacle's velocities differ by 5e-15 relative after a
 step, and grow about that much per step; over 0.005 s bonds then break a
 step apart in the two runs and the water's velocities differ by 1e-3).
-A solver asked to run with -parallel stops and says why (the halo exchange
-is not built yet).
+ulphPdFoam asked to run with -parallel stops and says why (its models do
+not run in parallel yet; tests/cases/parallelRuns.py runs those that do).
 """
 import math
 import os
@@ -284,8 +284,8 @@ def refused(t, case):
                        text=True, env=env)
     out = p.stdout + p.stderr
     t.check("%s -parallel stops" % SOLVER, p.returncode != 0, out[-800:])
-    t.check("%s -parallel says parallel runs are not supported yet" % SOLVER,
-            "not supported yet" in out, out[-800:])
+    t.check("%s -parallel says its models do not run in parallel yet"
+            % SOLVER, "does not run in parallel yet" in out, out[-800:])
 
 
 def decomposition_test(t, work):

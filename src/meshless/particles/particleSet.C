@@ -194,6 +194,35 @@ Foam::label Foam::meshless::particleSet::appendCopies
 }
 
 
+Foam::label Foam::meshless::particleSet::appendIds
+(
+    const label* ids,
+    const label n
+)
+{
+    const label n0 = size_;
+    id_.resize(n0 + n);
+    for (label k = 0; k < n; ++k) id_[n0 + k] = ids[k];
+    for (auto& f : fields_) f.second->resize(n0 + n);
+    size_ = n0 + n;
+    return n0;
+}
+
+
+void Foam::meshless::particleSet::truncate(const label n)
+{
+    if (n > size_)
+    {
+        FatalErrorInFunction
+            << "Particle set " << name_ << " has " << size_
+            << " particles, cannot truncate to " << n << abort(FatalError);
+    }
+    id_.resize(n);
+    for (auto& f : fields_) f.second->resize(n);
+    size_ = n;
+}
+
+
 Foam::label Foam::meshless::particleSet::removeMarked
 (
     const std::vector<char>& remove

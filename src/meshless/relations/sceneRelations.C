@@ -229,6 +229,21 @@ void Foam::meshless::sceneRelations::update()
 }
 
 
+void Foam::meshless::sceneRelations::rebuildEveryUpdate()
+{
+    for (auto& r : relations_) r->setMoving();
+    for (cells& c : cells_) c.moving = true;
+}
+
+
+Foam::scalar Foam::meshless::sceneRelations::maxRadius() const
+{
+    scalar R = 0;
+    for (const cells& c : cells_) R = Foam::max(R, c.radius);
+    return R;
+}
+
+
 void Foam::meshless::sceneRelations::update(neighbourRelation& r)
 {
     if (r.builds() > 0 && r.isStatic()) return;

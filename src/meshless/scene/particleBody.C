@@ -9,6 +9,8 @@
 #include "restartManifest.H"
 #include "dictionaryChecks.H"
 #include "OSspecific.H"
+#include "PstreamCombineReduceOps.H"
+#include "HashTable.H"
 #include <cmath>
 
 Foam::meshless::particleBody::particleBody
@@ -35,7 +37,17 @@ Foam::meshless::particleBody::particleBody
 
     const fileName cloudDir =
         runTime.path()/runTime.timeName()/lagrangianIO::cloudLocal(name);
-    if (!isFile(cloudDir/particleSet::positionsName))
+    // positions (seeded, written) or the exact position field alone (a
+    // processor's cloud from decomposePar)
+    const bool here =
+        isFile(cloudDir/particleSet::positionsName)
+     || isFile(cloudDir/lagrangianIO::exactPositionName);
+
+    // In a parallel run a processor holds no cloud of a body none of whose
+    // particles is in its part (decomposePar writes none)
+    const bool anywhere =
+        Pstream::parRun() ? returnReduce(here, orOp<bool>()) : here;
+    if (!anywhere)
     {
         FatalIOErrorInFunction(dict)
             << "Body '" << name << "' has no particles at time "
@@ -45,28 +57,45 @@ Foam::meshless::particleBody::particleBody
             << ". Run seedParticles, or correct the body name."
             << exit(FatalIOError);
     }
-    lagrangianIO::read(set_, runTime, runTime.timeName());
+    if (here) lagrangianIO::read(set_, runTime, runTime.timeName());
+    if (Pstream::parRun()) unifyFields();
 
     if (dict.found("spacing"))
     {
         spacing_ = readPositive(dict, "spacing");
     }
-    else if (set_.found("volume") && set_.size())
+    else if (set_.found("volume"))
     {
         // Seeded volumes are equal: take that value, not a mean whose last
         // bits depend on the count (a restart of a body that gained or
-        // lost particles through an open boundary would change h)
+        // lost particles through an open boundary would change h). Over
+        // every processor's particles in a parallel run.
         const particleField& V = set_.field("volume");
         scalar sum = 0;
         scalar lo = GREAT;
         scalar hi = -GREAT;
+        label n = set_.size();
         for (label i = 0; i < set_.size(); ++i)
         {
             sum += V(i, 0);
             lo = min(lo, V(i, 0));
             hi = max(hi, V(i, 0));
         }
-        const scalar mean = hi - lo <= 1e-12*hi ? lo : sum/set_.size();
+        if (Pstream::parRun())
+        {
+            reduce(sum, sumOp<scalar>());
+            reduce(lo, minOp<scalar>());
+            reduce(hi, maxOp<scalar>());
+            reduce(n, sumOp<label>());
+        }
+        if (n == 0)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Body '" << name << "' has an empty cloud: expected"
+                << " 'spacing', or particles to derive it from"
+                << exit(FatalIOError);
+        }
+        const scalar mean = hi - lo <= 1e-12*hi ? lo : sum/n;
         spacing_ = std::pow(mean, 1.0/dim);
     }
     else
@@ -86,6 +115,37 @@ Foam::meshless::particleBody::particleBody
 
 Foam::meshless::particleBody::~particleBody()
 {}
+
+
+void Foam::meshless::particleBody::unifyFields()
+{
+    // Every processor's fields by name and kind: a processor without a
+    // cloud of the body (or without a field another read) adds them empty
+    HashTable<label, word> kinds;
+    for (const word& f : set_.fieldNames())
+    {
+        kinds.set(f, label(set_.field(f).fieldKind()));
+    }
+    Pstream::mapCombineGather(kinds, maxEqOp<label>());
+    Pstream::mapCombineScatter(kinds);
+    for (const word& f : kinds.sortedToc())
+    {
+        if (!set_.found(f))
+        {
+            set_.addField(f, particleField::kind(kinds[f]));
+        }
+        else if (label(set_.field(f).fieldKind()) != kinds[f])
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Body '" << name_ << "': field " << f << " is a "
+                << particleField::kindNames[set_.field(f).fieldKind()]
+                << " on processor " << Pstream::myProcNo() << " and a "
+                << particleField::kindNames[particleField::kind(kinds[f])]
+                << " on another: expected the same cloud fields on every"
+                << " processor" << exit(FatalIOError);
+        }
+    }
+}
 
 
 void Foam::meshless::particleBody::select(costAccounting& costs)
@@ -280,7 +340,8 @@ void Foam::meshless::particleBody::advance
 
 void Foam::meshless::particleBody::describe(Ostream& os) const
 {
-    os  << "    " << name_ << ": " << set_.size() << " particles, spacing "
+    os  << "    " << name_ << ": "
+        << returnReduce(set_.size(), sumOp<label>()) << " particles, spacing "
         << spacing_ << ", density " << density_ << ", model "
         << dict_.get<word>("model");
     if (kernel_.valid())

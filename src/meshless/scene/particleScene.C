@@ -37,20 +37,10 @@ Foam::meshless::particleScene::particleScene(const polyMesh& mesh)
     bodies_(),
     costs_(),
     relationsCost_(costs_.part("neighbourRelations")),
+    exchangeCost_(Pstream::parRun() ? costs_.part("haloExchange") : -1),
     writeCost_(costs_.part("write")),
     vtp_(dict_.getOrDefault<bool>("vtp", false))
 {
-    if (Pstream::parRun())
-    {
-        FatalErrorInFunction
-            << "Parallel runs (-parallel) are not supported yet: the bodies'"
-            << " particles do not exchange halos across processor"
-            << " boundaries, so each processor would run its part of the"
-            << " case alone. Run the solver on the undecomposed case"
-            << " (decomposePar and reconstructPar carry the clouds)"
-            << exit(FatalError);
-    }
-
     if (dim_ == 2 && mesh.solutionD()[vector::Z] != -1)
     {
         FatalErrorInFunction
@@ -87,6 +77,7 @@ Foam::meshless::particleScene::particleScene(const polyMesh& mesh)
     {
         b.select(costs_);
     }
+    if (Pstream::parRun()) startParallel(maxSpacing);
     startPeriodic();
     for (particleBody& b : bodies_)
     {
@@ -114,6 +105,10 @@ Foam::meshless::particleScene::particleScene(const polyMesh& mesh)
             );
         }
     }
+
+    // The models are set up over their halos: their own particles are
+    // what the run writes and samples
+    detachHalos();
 
     if (dict_.found("monitors"))
     {
@@ -289,7 +284,7 @@ Foam::label Foam::meshless::particleScene::nParticles() const
 {
     label n = 0;
     for (const particleBody& b : bodies_) n += b.particles().size();
-    return n;
+    return returnReduce(n, sumOp<label>());
 }
 
 
@@ -305,12 +300,13 @@ Foam::scalar Foam::meshless::particleScene::maxDeltaT(const scalar maxCo) const
     {
         dt = min(dt, coupling_->maxDeltaT(maxCo));
     }
-    return dt;
+    return returnReduce(dt, minOp<scalar>());
 }
 
 
 void Foam::meshless::particleScene::advance(const scalar t, const scalar dt)
 {
+    attachHalos(false);
     for (particleBody& b : bodies_)
     {
         b.model().beginStep(t);
@@ -329,7 +325,93 @@ void Foam::meshless::particleScene::advance(const scalar t, const scalar dt)
     {
         coupling_->advance(t, dt, costs_);
     }
+    detachHalos();
     if (!openBoundaries_.empty()) exchangeOpenBoundaries(t + dt);
+}
+
+
+void Foam::meshless::particleScene::startParallel(const scalar maxSpacing)
+{
+    // What needs more than halos and migration is refused by name
+    const char* const notYet =
+        " does not run in parallel yet: run the case serially (decomposePar"
+        " and reconstructPar carry its clouds)";
+    for (const particleBody& b : bodies_)
+    {
+        if (!b.model().parallelReady())
+        {
+            FatalIOErrorInFunction(b.dict())
+                << "Body " << b.name() << ": model "
+                << b.dict().get<word>("model") << notYet
+                << exit(FatalIOError);
+        }
+    }
+    for (const char* key : {"coupling", "openBoundaries", "periodic"})
+    {
+        if (dict_.found(key))
+        {
+            FatalIOErrorInFunction(dict_)
+                << "'" << key << "'" << notYet << exit(FatalIOError);
+        }
+    }
+
+    // The halo: the widest search of any relation (a kernel's support
+    // grown by its model's skin), checked once the models have asked
+    scalar radius = 0;
+    for (const particleBody& b : bodies_)
+    {
+        if (!b.hasKernel()) continue;
+        const scalar skin =
+            b.dict().getOrDefault<scalar>("neighbourSkin", 0.1);
+        radius = max(radius, b.kernel().radius()*(1 + max(skin, 0.1)));
+    }
+    if (radius == 0) radius = 3*maxSpacing;
+
+    std::vector<particleSet*> sets;
+    for (particleBody& b : bodies_) sets.push_back(&b.particles());
+    distribution_.reset
+    (
+        new particleDistribution(mesh_, dim_, zPlane_, radius, sets)
+    );
+    attachHalos(true);
+}
+
+
+void Foam::meshless::particleScene::attachHalos(const bool everyBody)
+{
+    if (!distribution_.valid()) return;
+    costAccounting::scope timer(costs_, exchangeCost_);
+    {
+        // At the start every body (decomposePar placed the wall layers
+        // outside the mesh by the cell nearest them), then the moving ones
+        std::vector<bool> move;
+        for (particleBody& b : bodies_)
+        {
+            move.push_back(everyBody || b.model().moves());
+        }
+        distribution_->migrate(move);
+    }
+    distribution_->attachHalos();
+    for (particleBody& b : bodies_) b.model().resized();
+
+    // Every relation over the new particle order, and wide enough
+    relations_.rebuildEveryUpdate();
+    if (relations_.maxRadius() > distribution_->radius())
+    {
+        FatalErrorInFunction
+            << "A neighbour relation searches " << relations_.maxRadius()
+            << " m, beyond the halo's " << distribution_->radius() << " m"
+            << abort(FatalError);
+    }
+}
+
+
+void Foam::meshless::particleScene::detachHalos()
+{
+    if (!distribution_.valid() || !distribution_->attached()) return;
+    costAccounting::scope timer(costs_, exchangeCost_);
+    distribution_->detachHalos();
+    for (particleBody& b : bodies_) b.model().resized();
 }
 
 
@@ -536,7 +618,11 @@ void Foam::meshless::particleScene::runCost(dictionary& d) const
     {
         dictionary e;
         e.add("model", b.dict().get<word>("model"));
-        e.add("particles", b.particles().size());
+        e.add
+        (
+            "particles",
+            returnReduce(b.particles().size(), sumOp<label>())
+        );
         e.add("spacing", b.spacing());
         if (b.hasKernel()) e.add("smoothingLength", b.kernel().h());
         bodies.add(b.name(), e);
@@ -553,4 +639,10 @@ void Foam::meshless::particleScene::runCost(dictionary& d) const
     }
     d.add("bodies", bodies);
     d.add("subSteps", subSteps);
+    if (distribution_.valid())
+    {
+        dictionary p;
+        distribution_->runCost(p);
+        d.add("parallel", p);
+    }
 }

@@ -203,6 +203,7 @@ void Foam::meshless::particleTimeLoop::writeRunCost
     #else
     d.add("threads", label(1));
     #endif
+    d.add("processors", label(Pstream::nProcs()));
     d.add("startTime", runTime_.startTime().value());
     d.add("time", runTime_.value());
     d.add("steps", steps);
@@ -218,7 +219,9 @@ void Foam::meshless::particleTimeLoop::writeRunCost
     scene_.runCost(d);
     d.add("parts", scene_.costs().dict(loopSeconds, particleSteps));
 
+    // The master's (the counts are every processor's, the times its own).
     // Complete or not at all: written beside, then renamed
+    if (!Pstream::master()) return;
     const fileName dir =
         runTime_.globalPath()/"postProcessing"/"runCost"
        /runTime_.timeName(runTime_.startTime().value());

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "fluidModel.H"
+#include "haloHook.H"
 #include "openBoundary.H"
 #include "particleScene.H"
 #include "effect.H"
@@ -315,6 +316,7 @@ void Foam::meshless::fluidModel::updateGeometry()
 
 Foam::label Foam::meshless::fluidModel::releaseSplash()
 {
+    refreshHalos();
     const label n = p_.size();
     const label dim = body_.dim();
     const label* off = own_->offsetData();
@@ -389,6 +391,9 @@ void Foam::meshless::fluidModel::heightRange(scalar& lo, scalar& hi) const
         lo = min(lo, height(i));
         hi = max(hi, height(i));
     }
+    // Over every processor's particles (its halo holds others' own)
+    reduce(lo, minOp<scalar>());
+    reduce(hi, maxOp<scalar>());
 }
 
 

@@ -622,7 +622,9 @@ Foam::scalar Foam::meshless::bodyModels::riemannWcsph::strainEnergy() const
 
 Foam::scalar Foam::meshless::bodyModels::riemannWcsph::acousticDeltaT() const
 {
-    return acousticCourant_*body_.kernel().h()/(c0_ + U_.maxMagnitude());
+    // The same number of acoustic steps on every processor
+    const scalar Umax = returnReduce(U_.maxMagnitude(), maxOp<scalar>());
+    return acousticCourant_*body_.kernel().h()/(c0_ + Umax);
 }
 
 

@@ -142,7 +142,7 @@ Foam::scalar Foam::meshless::monitors::energy::potential
             E -= m(i, 0)*g->value()[c]*x(i, c);
         }
     }
-    return E;
+    return returnReduce(E, sumOp<scalar>());
 }
 
 
@@ -231,13 +231,16 @@ void Foam::meshless::monitors::energy::writeValues(Ostream& os)
                 power += m(i, 0)*p;
             }
         }
-        const scalar strain = b.model().strainEnergy();
+        reduce(kinetic, sumOp<scalar>());
+        const scalar strain =
+            returnReduce(b.model().strainEnergy(), sumOp<scalar>());
         const scalar pot = potential(b) - potential0_[k];
         os << tab << kinetic << tab << strain << tab << pot;
         total += kinetic + strain + pot;
     }
     if (frame_)
     {
+        reduce(power, sumOp<scalar>());
         if (frameTime_ > -GREAT && t > frameTime_)
         {
             frameWork_ += 0.5*(framePower_ + power)*(t - frameTime_);

@@ -8,6 +8,7 @@
 #include "OSspecific.H"
 #include "IFstream.H"
 #include "atomicTimeWriter.H"
+#include "StringStream.H"
 
 namespace Foam
 {
@@ -80,15 +81,25 @@ Foam::OFstream& Foam::meshless::monitor::file()
 void Foam::meshless::monitor::sample(const scalar t, const bool force)
 {
     const Time& runTime = scene_.time();
-    const bool first = !file_.valid();
+    const bool first = lastTime_ == -GREAT;
     const bool onInterval = runTime.timeIndex() % interval_ == 0;
     if ((first || force || onInterval) && t != lastTime_)
     {
         lastTime_ = t;
-        OFstream& os = file();
-        os << t;
-        writeValues(os);
-        os << endl;
+        // Every processor takes part in the values' reductions, the master
+        // writes them
+        if (Pstream::master())
+        {
+            OFstream& os = file();
+            os << t;
+            writeValues(os);
+            os << endl;
+        }
+        else
+        {
+            OStringStream os;
+            writeValues(os);
+        }
     }
 }
 

@@ -89,6 +89,9 @@ Foam::scalar Foam::meshless::monitors::probes::value(const label k) const
         sumWf += w*f(i, 0);
         sumW += w;
     }
+    // Over every processor's particles
+    reduce(sumWf, sumOp<scalar>());
+    reduce(sumW, sumOp<scalar>());
     return sumW > 0 ? sumWf/sumW : 0;
 }
 

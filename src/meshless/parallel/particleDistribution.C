@@ -1,0 +1,523 @@
+/*---------------------------------------------------------------------------*\
+  meshlessFoam: meshless fluid-structure interaction inside OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "particleDistribution.H"
+#include "haloHook.H"
+#include "Pstream.H"
+#include "PstreamBuffers.H"
+#include "UIPstream.H"
+#include "UOPstream.H"
+#include "treeBoundBox.H"
+#include <chrono>
+
+void (*Foam::meshless::haloHook::refresh)() = nullptr;
+
+Foam::meshless::particleDistribution*
+Foam::meshless::particleDistribution::active_ = nullptr;
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::meshless::particleDistribution::refreshActive()
+{
+    if (active_) active_->refresh();
+}
+
+
+Foam::point Foam::meshless::particleDistribution::position
+(
+    const particleField& x,
+    const label i
+) const
+{
+    point p(0, 0, zPlane_);
+    for (label d = 0; d < dim_; ++d) p[d] = x(i, d);
+    return p;
+}
+
+
+Foam::scalar Foam::meshless::particleDistribution::distSqr
+(
+    const double* p,
+    const boundBox& b
+) const
+{
+    scalar s = 0;
+    for (label d = 0; d < dim_; ++d)
+    {
+        const scalar lo = b.min()[d] - p[d];
+        const scalar hi = p[d] - b.max()[d];
+        const scalar e = Foam::max(Foam::max(lo, hi), scalar(0));
+        s += e*e;
+    }
+    return s;
+}
+
+
+Foam::boundBox Foam::meshless::particleDistribution::ownBox() const
+{
+    boundBox box(boundBox::invertedBox);
+    for (const particleSet* set : sets_)
+    {
+        const particleField& x = set->positions();
+        for (label i = 0; i < set->size(); ++i) box.add(position(x, i));
+    }
+    return box;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::meshless::particleDistribution::particleDistribution
+(
+    const polyMesh& mesh,
+    const label dim,
+    const scalar zPlane,
+    const scalar radius,
+    const std::vector<particleSet*>& sets
+)
+:
+    mesh_(mesh),
+    dim_(dim),
+    zPlane_(zPlane),
+    radius_(radius),
+    sets_(sets),
+    attached_(false),
+    sendBuf_(Pstream::nProcs()),
+    recvBuf_(Pstream::nProcs()),
+    refreshes_(0),
+    refreshSeconds_(0),
+    valuesSent_(0),
+    attachments_(0),
+    haloSum_(0),
+    ownSum_(0)
+{
+    const label nProcs = Pstream::nProcs();
+    const label me = Pstream::myProcNo();
+
+    // The largest cell (its longest edge in the solution plane)
+    scalar edge = 0;
+    const pointField& pts = mesh.points();
+    for (const Foam::edge& e : mesh.edges())
+    {
+        vector d = e.vec(pts);
+        if (dim_ == 2) d.z() = 0;
+        edge = Foam::max(edge, mag(d));
+    }
+    reduce(edge, maxOp<scalar>());
+
+    // Every processor's part
+    List<boundBox> parts(nProcs);
+    parts[me] = mesh.bounds();
+    Pstream::gatherList(parts);
+    Pstream::scatterList(parts);
+
+    // A particle moves less than a cell and a halo width per step: the
+    // centres of another processor's cells within a few cells of this part
+    // decide where a particle that leaves it goes
+    const scalar margin = 4*edge + 2*radius_;
+    const pointField& cc = mesh.cellCentres();
+    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+    for (label q = 0; q < nProcs; ++q)
+    {
+        if (q == me) continue;
+        DynamicList<point> near;
+        for (const point& c : cc)
+        {
+            if (distSqr(c.v_, parts[q]) < sqr(margin)) near.append(c);
+        }
+        UOPstream os(q, pBufs);
+        os << pointField(near);
+    }
+    labelList recvSizes;
+    pBufs.finishedSends(recvSizes);
+
+    DynamicList<point> centres(cc);
+    DynamicList<label> procs(labelList(cc.size(), me));
+    for (label q = 0; q < nProcs; ++q)
+    {
+        if (q == me || !recvSizes[q]) continue;
+        UIPstream is(q, pBufs);
+        pointField theirs(is);
+        centres.append(theirs);
+        procs.append(labelList(theirs.size(), q));
+    }
+    centres_.transfer(centres);
+    centreProc_.transfer(procs);
+
+    treeBoundBox bb(centres_);
+    bb.inflate(1e-4);
+    tree_.reset
+    (
+        new indexedOctree<treeDataPoint>
+        (
+            treeDataPoint(centres_), bb, 8, 10.0, 3.0
+        )
+    );
+
+    halos_.resize(sets_.size());
+    for (halo& h : halos_)
+    {
+        h.nOwned = 0;
+        h.send.resize(nProcs);
+        h.recvStart.assign(nProcs, 0);
+        h.recvCount.assign(nProcs, 0);
+    }
+}
+
+
+Foam::meshless::particleDistribution::~particleDistribution()
+{
+    if (active_ == this)
+    {
+        active_ = nullptr;
+        haloHook::refresh = nullptr;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::meshless::particleDistribution::nOwned(const label b) const
+{
+    return attached_ ? halos_[b].nOwned : sets_[b]->size();
+}
+
+
+Foam::label Foam::meshless::particleDistribution::nHalo() const
+{
+    if (!attached_) return 0;
+    label n = 0;
+    for (label b = 0; b < label(halos_.size()); ++b) n += sets_[b]->size() - halos_[b].nOwned;
+    return n;
+}
+
+
+Foam::label Foam::meshless::particleDistribution::owner(const point& p) const
+{
+    const pointIndexHit hit = tree_->findNearest(p, GREAT);
+    return hit.hit() ? centreProc_[hit.index()] : Pstream::myProcNo();
+}
+
+
+Foam::label Foam::meshless::particleDistribution::migrate
+(
+    const std::vector<bool>& move
+)
+{
+    if (attached_)
+    {
+        FatalErrorInFunction
+            << "Migration with the halos attached" << abort(FatalError);
+    }
+    const label nProcs = Pstream::nProcs();
+    const label me = Pstream::myProcNo();
+
+    // Who goes where, per body
+    std::vector<std::vector<std::vector<label>>> leaving(sets_.size());
+    label nSent = 0;
+    for (label b = 0; b < label(sets_.size()); ++b)
+    {
+        leaving[b].resize(nProcs);
+        if (!move[b]) continue;
+        particleSet& set = *sets_[b];
+        const label n = set.size();
+        const particleField& x = set.positions();
+        owner_.resize(n);
+        label* own = owner_.data();
+        #pragma omp parallel for schedule(static) if (n > 256)
+        for (label i = 0; i < n; ++i) own[i] = owner(position(x, i));
+        for (label i = 0; i < n; ++i)
+        {
+            if (own[i] != me)
+            {
+                leaving[b][own[i]].push_back(i);
+                ++nSent;
+            }
+        }
+    }
+    if (!returnReduce(nSent, sumOp<label>())) return 0;
+
+    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+    for (label q = 0; q < nProcs; ++q)
+    {
+        bool any = false;
+        for (label b = 0; b < label(sets_.size()); ++b) any = any || !leaving[b][q].empty();
+        if (!any) continue;
+        UOPstream os(q, pBufs);
+        for (label b = 0; b < label(sets_.size()); ++b)
+        {
+            particleSet& set = *sets_[b];
+            const std::vector<label>& go = leaving[b][q];
+            labelList ids(label(go.size()));
+            forAll(ids, k) ids[k] = set.ids()[go[k]];
+            os << ids;
+            set.forEachField([&](const particleField& f)
+            {
+                const label nc = f.nComponents();
+                scalarList d(label(go.size())*nc);
+                forAll(ids, k)
+                {
+                    for (label c = 0; c < nc; ++c) d[k*nc + c] = f(go[k], c);
+                }
+                os << d;
+            });
+        }
+    }
+    labelList recvSizes;
+    pBufs.finishedSends(recvSizes);
+
+    for (label b = 0; b < label(sets_.size()); ++b)
+    {
+        particleSet& set = *sets_[b];
+        std::vector<char> gone(set.size(), 0);
+        for (const std::vector<label>& go : leaving[b])
+        {
+            for (const label i : go) gone[i] = 1;
+        }
+        set.removeMarked(gone);
+    }
+
+    for (label q = 0; q < nProcs; ++q)
+    {
+        if (q == me || !recvSizes[q]) continue;
+        UIPstream is(q, pBufs);
+        for (label b = 0; b < label(sets_.size()); ++b)
+        {
+            particleSet& set = *sets_[b];
+            labelList ids(is);
+            const label n0 = set.appendIds(ids.cdata(), ids.size());
+            set.forEachField([&](particleField& f)
+            {
+                const label nc = f.nComponents();
+                scalarList d(is);
+                if (d.size() != ids.size()*nc)
+                {
+                    FatalErrorInFunction
+                        << "Body " << set.name() << ", field " << f.name()
+                        << ": processor " << q << " sent " << d.size()
+                        << " values for " << ids.size() << " particles,"
+                        << " expected " << nc << " each (the processors'"
+                        << " bodies have other fields)" << abort(FatalError);
+                }
+                forAll(ids, k)
+                {
+                    for (label c = 0; c < nc; ++c)
+                    {
+                        f(n0 + k, c) = d[k*nc + c];
+                    }
+                }
+            });
+        }
+    }
+    return nSent;
+}
+
+
+void Foam::meshless::particleDistribution::attachHalos()
+{
+    if (attached_) detachHalos();
+    const label nProcs = Pstream::nProcs();
+    const label me = Pstream::myProcNo();
+
+    List<boundBox> boxes(nProcs);
+    boxes[me] = ownBox();
+    Pstream::gatherList(boxes);
+    Pstream::scatterList(boxes);
+
+    // The processors whose particles may be within reach of this one's
+    const scalar R2 = sqr(radius_);
+    DynamicList<label> near;
+    if (boxes[me].valid())
+    {
+        for (label q = 0; q < nProcs; ++q)
+        {
+            if (q == me || !boxes[q].valid()) continue;
+            boundBox b(boxes[me]);
+            b.min() -= vector::uniform(radius_);
+            b.max() += vector::uniform(radius_);
+            if (b.overlaps(boxes[q])) near.append(q);
+        }
+    }
+
+    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+    for (label b = 0; b < label(sets_.size()); ++b)
+    {
+        halo& h = halos_[b];
+        particleSet& set = *sets_[b];
+        h.nOwned = set.size();
+        for (std::vector<label>& s : h.send) s.clear();
+        const particleField& x = set.positions();
+        for (label i = 0; i < h.nOwned; ++i)
+        {
+            const double* p = x.data() + size_t(i)*x.nComponents();
+            for (const label q : near)
+            {
+                if (distSqr(p, boxes[q]) < R2) h.send[q].push_back(i);
+            }
+        }
+    }
+    for (const label q : near)
+    {
+        bool any = false;
+        for (label b = 0; b < label(sets_.size()); ++b) any = any || !halos_[b].send[q].empty();
+        if (!any) continue;
+        UOPstream os(q, pBufs);
+        for (label b = 0; b < label(sets_.size()); ++b)
+        {
+            const std::vector<label>& s = halos_[b].send[q];
+            labelList ids(label(s.size()));
+            forAll(ids, k) ids[k] = sets_[b]->ids()[s[k]];
+            os << ids;
+        }
+    }
+    labelList recvSizes;
+    pBufs.finishedSends(recvSizes);
+
+    for (label q = 0; q < nProcs; ++q)
+    {
+        const bool from = q != me && recvSizes[q];
+        autoPtr<UIPstream> is;
+        if (from) is.reset(new UIPstream(q, pBufs));
+        for (label b = 0; b < label(sets_.size()); ++b)
+        {
+            halo& h = halos_[b];
+            particleSet& set = *sets_[b];
+            h.recvStart[q] = set.size();
+            h.recvCount[q] = 0;
+            if (!from) continue;
+            labelList ids(is());
+            set.appendIds(ids.cdata(), ids.size());
+            h.recvCount[q] = ids.size();
+        }
+    }
+
+    ++attachments_;
+    for (label b = 0; b < label(sets_.size()); ++b)
+    {
+        haloSum_ += sets_[b]->size() - halos_[b].nOwned;
+        ownSum_ += halos_[b].nOwned;
+    }
+
+    attached_ = true;
+    active_ = this;
+    haloHook::refresh = &refreshActive;
+    refresh();
+}
+
+
+void Foam::meshless::particleDistribution::refresh()
+{
+    if (!attached_) return;
+    ++refreshes_;
+    const auto t0 = std::chrono::steady_clock::now();
+    const label nProcs = Pstream::nProcs();
+    const int tag = UPstream::msgType() + 1;
+
+    // Values per particle, over every field of each body
+    std::vector<label> width(sets_.size(), 0);
+    for (label b = 0; b < label(sets_.size()); ++b)
+    {
+        sets_[b]->forEachField
+        (
+            [&](const particleField& f) { width[b] += f.nComponents(); }
+        );
+    }
+
+    const label start = UPstream::nRequests();
+    for (label q = 0; q < nProcs; ++q)
+    {
+        label n = 0;
+        for (label b = 0; b < label(sets_.size()); ++b) n += halos_[b].recvCount[q]*width[b];
+        if (!n) continue;
+        std::vector<double>& buf = recvBuf_[q];
+        if (label(buf.size()) < n) buf.resize(n);
+        UIPstream::read
+        (
+            Pstream::commsTypes::nonBlocking, q,
+            reinterpret_cast<char*>(buf.data()), n*sizeof(double), tag,
+            UPstream::worldComm
+        );
+    }
+    for (label q = 0; q < nProcs; ++q)
+    {
+        label n = 0;
+        for (label b = 0; b < label(sets_.size()); ++b) n += label(halos_[b].send[q].size())*width[b];
+        if (!n) continue;
+        std::vector<double>& buf = sendBuf_[q];
+        if (label(buf.size()) < n) buf.resize(n);
+        double* out = buf.data();
+        for (label b = 0; b < label(sets_.size()); ++b)
+        {
+            const std::vector<label>& s = halos_[b].send[q];
+            sets_[b]->forEachField([&](const particleField& f)
+            {
+                const label nc = f.nComponents();
+                const double* d = f.data();
+                for (const label i : s)
+                {
+                    for (label c = 0; c < nc; ++c) *out++ = d[i*nc + c];
+                }
+            });
+        }
+        valuesSent_ += n;
+        UOPstream::write
+        (
+            Pstream::commsTypes::nonBlocking, q,
+            reinterpret_cast<const char*>(buf.data()), n*sizeof(double),
+            tag, UPstream::worldComm
+        );
+    }
+    UPstream::waitRequests(start);
+
+    for (label q = 0; q < nProcs; ++q)
+    {
+        const double* in = recvBuf_[q].data();
+        for (label b = 0; b < label(sets_.size()); ++b)
+        {
+            const label n = halos_[b].recvCount[q];
+            if (!n) continue;
+            const label i0 = halos_[b].recvStart[q];
+            sets_[b]->forEachField([&](particleField& f)
+            {
+                const label nc = f.nComponents();
+                double* d = f.data() + size_t(i0)*nc;
+                for (label k = 0; k < n*nc; ++k) d[k] = *in++;
+            });
+        }
+    }
+    refreshSeconds_ += std::chrono::duration<double>
+    (
+        std::chrono::steady_clock::now() - t0
+    ).count();
+}
+
+
+void Foam::meshless::particleDistribution::runCost(dictionary& d) const
+{
+    d.add("processors", label(Pstream::nProcs()));
+    d.add("haloWidth", radius_);
+    d.add("attachments", attachments_);
+    d.add("haloParticles", returnReduce(haloSum_, sumOp<double>()));
+    d.add("ownParticles", returnReduce(ownSum_, sumOp<double>()));
+    d.add("refreshes", refreshes_);
+    d.add("refreshSeconds", refreshSeconds_);
+    d.add("valuesSent", valuesSent_);
+}
+
+
+void Foam::meshless::particleDistribution::detachHalos()
+{
+    if (!attached_) return;
+    for (label b = 0; b < label(sets_.size()); ++b) sets_[b]->truncate(halos_[b].nOwned);
+    attached_ = false;
+    if (active_ == this)
+    {
+        active_ = nullptr;
+        haloHook::refresh = nullptr;
+    }
+}
+
+
+// ************************************************************************* //

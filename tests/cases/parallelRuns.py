@@ -1,0 +1,264 @@
+#!/usr/bin/python3
+"""Case test: the solvers run in parallel the OpenFOAM way (decomposePar,
+mpirun -np N solver -parallel, reconstructPar) and give the serial run's
+particles.
+
+- riemannSphFoam, the dam break at 2 mm (2261 particles, 186 steps to
+  0.08 s), serially and decomposed three ways: simple (2 1 1: all the
+  water on one processor, the other holding none, the walls split),
+  hierarchical (1 3 1: the water column cut in three, its upper parts
+  falling into the lower processors' parts) and scotch (2).
+  Reconstructed at 0.04 and 0.08 s, every particle (by id) and every
+  written field equals the serial run's to RTOL of the field's largest
+  magnitude: the sums over neighbours run in another order (halo
+  particles follow a processor's own), so the last bits differ (about
+  1e-11 at 0.08 s). The time steps are the serial run's, bit for bit
+  (the stable step is reduced over the processors), and the energy and
+  pressure probe monitors (sums over every processor's particles,
+  written by the master) equal the serial ones to their 12 printed
+  digits.
+- A parallel restart (hierarchical 1 3 1, startFrom latestTime on the
+  decomposed case at 0.04 s) ends at 0.08 s equal, bit for bit, to the uninterrupted
+  parallel run.
+- particleFoam, the free fall split across the fall (hierarchical 1 2 1):
+  the drop's particles migrate from the upper processor to the lower one
+  and the reconstructed clouds equal the serial ones bit for bit (no pair
+  interactions, so no summation order).
+"""
+import os
+import shutil
+import sys
+
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.path.dirname(here), "lib"))
+from caseTest import copy_case, project_dir, run, run_parts  # noqa: E402
+from caseTest import set_entry  # noqa: E402
+
+from foamCloud import read_cloud  # noqa: E402
+
+RTOL = 1e-10
+MONITOR_RTOL = 1e-9
+HEADER = "FoamFile { version 2.0; format ascii; class dictionary;" \
+    " object %s; }\n"
+DAM_BREAK = [
+    ("simple", 2, "coeffs { n (2 1 1); }"),
+    ("hierarchical", 3, "coeffs { n (1 3 1); order xyz; }"),
+    ("scotch", 2, ""),
+]
+MPI_ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
+               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMP_NUM_THREADS="1",
+               OMPI_MCA_mpi_yield_when_idle="1")
+
+
+def mpirun(n, solver, case):
+    import subprocess
+    p = subprocess.run(["mpirun", "--oversubscribe", "-np", str(n), solver,
+                        "-parallel"], cwd=case, capture_output=True,
+                       text=True, env=MPI_ENV)
+    return p.returncode, p.stdout + p.stderr
+
+
+def decompose_dict(case, method, n, coeffs):
+    with open(os.path.join(case, "system", "decomposeParDict"), "w") as f:
+        f.write(HEADER % "decomposeParDict"
+                + "numberOfSubdomains %d;\nmethod %s;\n%s\n"
+                % (n, method, coeffs))
+
+
+def prepared(t, tutorial, case, dx, end, interval):
+    copy_case(os.path.join(project_dir, tutorial), case)
+    if dx:
+        with open(os.path.join(case, "system", "resolution"), "w") as f:
+            f.write("dx %s;\n" % dx)
+    for key, value in (("endTime", end), ("writeInterval", interval)):
+        set_entry(case, "system/controlDict", key, value)
+    for cmd in ("blockMesh", "seedParticles"):
+        code, out = run([cmd], case)
+        if code != 0:
+            t.check("%s: %s succeeds" % (case, cmd), False, out[-1500:])
+            return False
+    return True
+
+
+def seeded_copy(src, dst):
+    """The seeded case without its results"""
+    shutil.copytree(src, dst, ignore=shutil.ignore_patterns(
+        "processor*", "log.*", "postProcessing", "0.*", "[1-9]*"))
+    return dst
+
+
+def parallel_run(t, case, solver, name, method, n, coeffs):
+    decompose_dict(case, method, n, coeffs)
+    code, out = run(["decomposePar"], case)
+    t.check("%s: decomposePar succeeds" % name, code == 0, out[-1500:])
+    if code != 0:
+        return False
+    code, out = mpirun(n, solver, case)
+    with open(os.path.join(case, "log." + solver), "w") as f:
+        f.write(out)
+    t.check("%s: mpirun -np %d %s -parallel succeeds" % (name, n, solver),
+            code == 0, out[-2000:])
+    if code != 0:
+        return False
+    code, out = run(["reconstructPar"], case)
+    t.check("%s: reconstructPar succeeds" % name, code == 0, out[-1500:])
+    return code == 0
+
+
+def worst_difference(a, b):
+    """Largest |a - b| over the particles (matched by id) of every field,
+    relative to the field's largest magnitude; None when the ids differ"""
+    ia = {i: k for k, i in enumerate(a["id"])}
+    ib = {i: k for k, i in enumerate(b["id"])}
+    if set(ia) != set(ib):
+        return None
+    worst = {}
+    for f in sorted(a):
+        if f == "id" or f not in b:
+            continue
+        diff = scale = 0.0
+        for i, ka in ia.items():
+            va, vb = a[f][ka], b[f][ib[i]]
+            if not isinstance(va, (list, tuple)):
+                va, vb = [va], [vb]
+            for x, y in zip(va, vb):
+                diff = max(diff, abs(x - y))
+                scale = max(scale, abs(x))
+        worst[f] = diff / scale if scale > 0 else diff
+    return worst
+
+
+def same_clouds(t, name, serial, case, bodies, times, rtol):
+    for time in times:
+        for body in bodies:
+            w = worst_difference(read_cloud(serial, time, body),
+                                 read_cloud(case, time, body))
+            if w is None:
+                t.check("%s: %s at %s s has the serial run's particles"
+                        % (name, body, time), False)
+                continue
+            field, value = max(w.items(), key=lambda kv: kv[1])
+            t.check("%s: %s at %s s equals the serial run to %g (largest"
+                    " difference %.1e, %s)" % (name, body, time, rtol, value,
+                                               field), value <= rtol)
+
+
+def log_steps(case, solver):
+    with open(os.path.join(case, "log." + solver)) as f:
+        return [line.split()[2] for line in f if line.startswith("deltaT =")]
+
+
+def monitor_rows(case, name):
+    path = os.path.join(case, "postProcessing", name, "0", name + ".dat")
+    with open(path) as f:
+        return [[float(v) for v in line.split()] for line in f
+                if not line.startswith("#")]
+
+
+def same_monitor(t, name, serial, case, monitor):
+    a, b = monitor_rows(serial, monitor), monitor_rows(case, monitor)
+    if len(a) != len(b):
+        t.check("%s: %s monitor has the serial run's %d rows (got %d)"
+                % (name, monitor, len(a), len(b)), False)
+        return
+    scale = [max(abs(r[c]) for r in a) or 1 for c in range(len(a[0]))]
+    worst = max(abs(x - y) / s for ra, rb in zip(a, b)
+                for x, y, s in zip(ra, rb, scale))
+    t.check("%s: %s monitor equals the serial one to %g (largest %.1e)"
+            % (name, monitor, MONITOR_RTOL, worst), worst <= MONITOR_RTOL)
+
+
+def processor_count(case, proc, time, body):
+    d = os.path.join(case, "processor%d" % proc, time, "lagrangian", body)
+    if not os.path.isdir(d):
+        return 0
+    return len(read_cloud(os.path.join(case, "processor%d" % proc), time,
+                          body)["id"])
+
+
+def dam_break(t, work):
+    solver = "riemannSphFoam"
+    serial = os.path.join(work, "damBreak")
+    if not prepared(t, "tutorials/riemannSphFoam/damBreak", serial, 0.002,
+                    0.08, 0.04):
+        return
+    seeded = seeded_copy(serial, os.path.join(work, "damBreakSeeded"))
+    code, out = run([solver], serial)
+    with open(os.path.join(serial, "log." + solver), "w") as f:
+        f.write(out)
+    t.check("serial run succeeds", code == 0, out[-1500:])
+    if code != 0:
+        return
+    steps = log_steps(serial, solver)
+    for method, n, coeffs in DAM_BREAK:
+        name = "%s%d" % (method, n)
+        case = seeded_copy(seeded, os.path.join(work, name))
+        if not parallel_run(t, case, solver, name, method, n, coeffs):
+            continue
+        same_clouds(t, name, serial, case, ("water", "walls"),
+                    ("0.04", "0.08"), RTOL)
+        t.check_equal("%s: the time steps are the serial run's (%d)"
+                      % (name, len(steps)), log_steps(case, solver), steps)
+        for monitor in ("energy", "sensor"):
+            same_monitor(t, name, serial, case, monitor)
+        counts = [[processor_count(case, p, time, "water")
+                   for p in range(n)] for time in ("0", "0.08")]
+        print("    %s: water per processor at 0 and 0.08 s: %s"
+              % (name, counts))
+        if method == "hierarchical":
+            t.check("%s: the water column is split at 0 s %s"
+                    % (name, counts[0]), min(counts[0][:2]) > 0)
+            t.check("%s: water moved to the lowest processor %s"
+                    % (name, counts), counts[1][0] > counts[0][0])
+            restart(t, seeded, case, solver, method, n, coeffs)
+        if method == "simple":
+            t.check("%s: a processor holds no water %s" % (name, counts[0]),
+                    min(counts[0]) == 0)
+
+
+def restart(t, seeded, uninterrupted, solver, method, n, coeffs):
+    name = "restart"
+    case = seeded_copy(seeded, os.path.join(os.path.dirname(seeded), name))
+    set_entry(case, "system/controlDict", "endTime", 0.04)
+    if not parallel_run(t, case, solver, name + " to 0.04 s", method, n,
+                        coeffs):
+        return
+    set_entry(case, "system/controlDict", "endTime", 0.08)
+    set_entry(case, "system/controlDict", "startFrom", "latestTime")
+    code, out = mpirun(n, solver, case)
+    t.check("%s: the decomposed case continues from 0.04 s" % name,
+            code == 0 and "Create polyMesh for time = 0.04" in out,
+            out[-1500:])
+    if code != 0:
+        return
+    code, out = run(["reconstructPar", "-latestTime"], case)
+    t.check("%s: reconstructPar succeeds" % name, code == 0, out[-1500:])
+    same_clouds(t, name, uninterrupted, case, ("water", "walls"),
+                ("0.08",), 0)
+
+
+def free_fall(t, work):
+    solver = "particleFoam"
+    serial = os.path.join(work, "freeFall")
+    if not prepared(t, "tutorials/particleFoam/freeFall", serial, None, 0.1,
+                    0.02):
+        return
+    case = seeded_copy(serial, os.path.join(work, "freeFallParallel"))
+    code, out = run([solver], serial)
+    t.check("freeFall: serial run succeeds", code == 0, out[-1500:])
+    if not parallel_run(t, case, solver, "freeFall", "hierarchical", 2,
+                        "coeffs { n (1 2 1); order xyz; }"):
+        return
+    counts = [[processor_count(case, p, time, "drop") for p in range(2)]
+              for time in ("0", "0.1")]
+    t.check("freeFall: the drop migrates to the lower processor %s" % counts,
+            counts[0][0] < counts[1][0] and sum(counts[0]) == sum(counts[1]))
+    same_clouds(t, "freeFall", serial, case, ("drop", "floor"),
+                ("0.02", "0.1"), 0)
+
+
+if __name__ == "__main__":
+    if shutil.which("mpirun") is None:
+        print("parallelRuns: no mpirun (openmpi-bin), nothing to test")
+        sys.exit(1)
+    sys.exit(run_parts("parallelRuns", dam_break, free_fall))
