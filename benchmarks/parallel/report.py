@@ -48,6 +48,7 @@ dx = serial["bodies"]["water"]["spacing"]
 latest = sorted((d for d in os.listdir(parCase) if d[0].isdigit()
                  and d != "0"), key=float)[-1]
 worst = 0.0
+worstField = "-"
 for body in ("water", "walls"):
     a = read_cloud(serialCase, latest, body)
     b = read_cloud(parCase, latest, body)
@@ -61,8 +62,9 @@ for body in ("water", "walls"):
             va, vb = a[f][k], b[f][ib[i]]
             if not isinstance(va, list):
                 va, vb = [va], [vb]
-            worst = max(worst, max(abs(x - y) for x, y in zip(va, vb))
-                        / scale)
+            d = max(abs(x - y) for x, y in zip(va, vb)) / scale
+            if d > worst:
+                worst, worstField = d, "%s %s" % (body, f)
 
 speedup = serial["wall"] / par["wall"]
 lines = [
@@ -90,7 +92,8 @@ lines = [
     " %.1f %%; migration and halo set-up: %.1f %%."
     % (refreshes, values, 100 * refreshShare, 100 * exchangeShare),
     "- The reconstructed parallel run against the serial one at %s s:"
-    " largest difference %.1e of a field's largest magnitude." % (latest, worst),
+    " largest difference %.1e of a field's largest magnitude (%s)."
+    % (latest, worst, worstField),
     ""]
 
 # The model

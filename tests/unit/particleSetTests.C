@@ -162,6 +162,71 @@ TEST(particleSet, appendCopiesAndRemoveMarkedKeepEveryFieldWithItsId)
 }
 
 
+TEST(particleSet, migrationEditsKeepEveryFieldWithItsId)
+{
+    // What a parallel run does to a set: another processor's particles
+    // appended with their ids (halo or migrated), halos truncated, the
+    // leaving particles removed with the holes filled from the end
+    particleSet s("fluid", 2);
+    particleField& p = s.addField("p", particleField::kind::scalar);
+    particleField& U = s.addField("U", particleField::kind::vector);
+    s.addScratchField("B", particleField::kind::tensor);
+    s.resize(10);
+    const label next = s.nextId();
+    auto fill = [&](const label i)
+    {
+        const label id = s.ids()[i];
+        p(i, 0) = 10.0*id;
+        U(i, 0) = id + 0.5;
+        U(i, 1) = -id;
+        s.field("B")(i, 3) = 3.0*id;
+        for (label d = 0; d < 2; ++d) s.positions()(i, d) = id*(d + 1);
+    };
+    for (label i = 0; i < s.size(); ++i) fill(i);
+
+    const std::vector<label> theirs{100, 57, 203};
+    const label first = s.appendIds(theirs.data(), label(theirs.size()));
+    EXPECT_EQ(first, 10);
+    EXPECT_EQ(s.size(), 13);
+    EXPECT_EQ(s.nextId(), next);        // others' ids are not fresh ids
+    for (label k = 0; k < 3; ++k)
+    {
+        EXPECT_EQ(s.ids()[first + k], theirs[k]);
+        EXPECT_EQ(p(first + k, 0), 0.0);
+        fill(first + k);
+    }
+
+    s.truncate(11);
+    EXPECT_EQ(s.size(), 11);
+    EXPECT_EQ(U.size(), 11);
+    EXPECT_EQ(s.field("B").size(), 11);
+
+    // Remove 0, 4 and the last (10): each other particle keeps its values
+    s.removeUnordered({0, 4, 10});
+    ASSERT_EQ(s.size(), 8);
+    std::vector<label> ids = s.ids();
+    std::sort(ids.begin(), ids.end());
+    for (label i = 0; i < s.size(); ++i)
+    {
+        const label id = s.ids()[i];
+        EXPECT_EQ(p(i, 0), 10.0*id);
+        EXPECT_EQ(U(i, 0), id + 0.5);
+        EXPECT_EQ(U(i, 1), -id);
+        EXPECT_EQ(s.field("B")(i, 3), 3.0*id);
+        EXPECT_EQ(s.positions()(i, 1), 2.0*id);
+    }
+    // The ids left are the first set's but the removed ones
+    std::vector<label> seeded;
+    for (label k = 0; k < 10; ++k) seeded.push_back(next - 10 + k);
+    std::vector<label> kept;
+    for (label k = 0; k < 10; ++k)
+    {
+        if (k != 0 && k != 4) kept.push_back(seeded[k]);
+    }
+    EXPECT_EQ(ids, kept);
+}
+
+
 TEST(particleSet, setIdsContinuesAfterTheLargest)
 {
     particleSet s("fluid", 2);

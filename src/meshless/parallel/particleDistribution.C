@@ -9,6 +9,7 @@
 #include "UIPstream.H"
 #include "UOPstream.H"
 #include "treeBoundBox.H"
+#include <algorithm>
 #include <chrono>
 
 void (*Foam::meshless::haloHook::refresh)() = nullptr;
@@ -88,6 +89,9 @@ Foam::meshless::particleDistribution::particleDistribution
     recvBuf_(Pstream::nProcs()),
     refreshes_(0),
     refreshSeconds_(0),
+    migrateSeconds_(0),
+    startSeconds_(0),
+    attachSeconds_(0),
     valuesSent_(0),
     attachments_(0),
     haloSum_(0),
@@ -156,6 +160,8 @@ Foam::meshless::particleDistribution::particleDistribution
         )
     );
 
+    makeBins(0.5*edge);
+
     halos_.resize(sets_.size());
     for (halo& h : halos_)
     {
@@ -194,8 +200,113 @@ Foam::label Foam::meshless::particleDistribution::nHalo() const
 }
 
 
+void Foam::meshless::particleDistribution::makeBins(const scalar binSize)
+{
+    binSize_ = binSize > 0 ? binSize : 1;
+    boundBox bb(centres_);
+    binOrigin_ = bb.min();
+    label n = 1;
+    for (label d = 0; d < 3; ++d)
+    {
+        binCount_[d] =
+            d < dim_ ? label(std::floor(bb.span()[d]/binSize_)) + 1 : 1;
+        n *= binCount_[d];
+    }
+    binOwner_.clear();
+    binStart_.clear();
+    binCandidates_.clear();
+    if (n > 32*centres_.size() + 1000)
+    {
+        // A few large cells among many small ones: the octree alone
+        return;
+    }
+    binOwner_.assign(n, -1);
+    binStart_.assign(n + 1, 0);
+
+    // Any point of a bin is within r of its centre: its nearest cell
+    // centre is within d0 + 2r of the bin's centre (d0: the bin centre's
+    // nearest)
+    const scalar r = 0.5*binSize_*std::sqrt(scalar(dim_));
+    for (label k = 0; k < binCount_[2]; ++k)
+    {
+        for (label j = 0; j < binCount_[1]; ++j)
+        {
+            for (label i = 0; i < binCount_[0]; ++i)
+            {
+                point b(binOrigin_);
+                b.x() += (i + 0.5)*binSize_;
+                b.y() += (j + 0.5)*binSize_;
+                if (dim_ == 3) b.z() += (k + 0.5)*binSize_;
+                else b.z() = zPlane_;
+                const label bin = i + binCount_[0]*(j + binCount_[1]*k);
+                const pointIndexHit hit = tree_->findNearest(b, GREAT);
+                if (hit.hit())
+                {
+                    const scalar d0 = mag(hit.hitPoint() - b);
+                    labelList near(tree_->findSphere(b, sqr(d0 + 2*r)));
+                    const label p = centreProc_[hit.index()];
+                    bool pure = true;
+                    for (const label c : near)
+                    {
+                        pure = pure && centreProc_[c] == p;
+                    }
+                    if (pure)
+                    {
+                        binOwner_[bin] = p;
+                    }
+                    else
+                    {
+                        // The few centres one of which is nearest
+                        Foam::sort(near);
+                        binCandidates_.insert
+                        (
+                            binCandidates_.end(), near.begin(), near.end()
+                        );
+                    }
+                }
+                binStart_[bin + 1] = label(binCandidates_.size());
+            }
+        }
+    }
+}
+
+
 Foam::label Foam::meshless::particleDistribution::owner(const point& p) const
 {
+    if (!binOwner_.empty())
+    {
+        label idx[3] = {0, 0, 0};
+        bool inside = true;
+        for (label d = 0; d < dim_; ++d)
+        {
+            const scalar s = (p[d] - binOrigin_[d])/binSize_;
+            inside = inside && s >= 0 && s < binCount_[d];
+            idx[d] = inside ? label(s) : 0;
+        }
+        if (inside)
+        {
+            const label bin =
+                idx[0] + binCount_[0]*(idx[1] + binCount_[1]*idx[2]);
+            if (binOwner_[bin] >= 0) return binOwner_[bin];
+            const label c0 = binStart_[bin];
+            const label c1 = binStart_[bin + 1];
+            if (c1 > c0)
+            {
+                label best = binCandidates_[c0];
+                scalar bestD = magSqr(centres_[best] - p);
+                for (label c = c0 + 1; c < c1; ++c)
+                {
+                    const scalar d = magSqr(centres_[binCandidates_[c]] - p);
+                    if (d < bestD)
+                    {
+                        bestD = d;
+                        best = binCandidates_[c];
+                    }
+                }
+                return centreProc_[best];
+            }
+        }
+    }
     const pointIndexHit hit = tree_->findNearest(p, GREAT);
     return hit.hit() ? centreProc_[hit.index()] : Pstream::myProcNo();
 }
@@ -213,6 +324,19 @@ Foam::label Foam::meshless::particleDistribution::migrate
     }
     const label nProcs = Pstream::nProcs();
     const label me = Pstream::myProcNo();
+    const auto t0 = std::chrono::steady_clock::now();
+    struct timer
+    {
+        std::chrono::steady_clock::time_point t0;
+        double& total;
+        ~timer()
+        {
+            total += std::chrono::duration<double>
+            (
+                std::chrono::steady_clock::now() - t0
+            ).count();
+        }
+    } clock{t0, attachments_ ? migrateSeconds_ : startSeconds_};
 
     // Who goes where, per body
     std::vector<std::vector<std::vector<label>>> leaving(sets_.size());
@@ -270,13 +394,13 @@ Foam::label Foam::meshless::particleDistribution::migrate
 
     for (label b = 0; b < label(sets_.size()); ++b)
     {
-        particleSet& set = *sets_[b];
-        std::vector<char> gone(set.size(), 0);
+        std::vector<label> gone;
         for (const std::vector<label>& go : leaving[b])
         {
-            for (const label i : go) gone[i] = 1;
+            gone.insert(gone.end(), go.begin(), go.end());
         }
-        set.removeMarked(gone);
+        std::sort(gone.begin(), gone.end());
+        sets_[b]->removeUnordered(gone);
     }
 
     for (label q = 0; q < nProcs; ++q)
@@ -320,6 +444,7 @@ void Foam::meshless::particleDistribution::attachHalos()
     if (attached_) detachHalos();
     const label nProcs = Pstream::nProcs();
     const label me = Pstream::myProcNo();
+    const auto t0 = std::chrono::steady_clock::now();
 
     List<boundBox> boxes(nProcs);
     boxes[me] = ownBox();
@@ -403,6 +528,10 @@ void Foam::meshless::particleDistribution::attachHalos()
     attached_ = true;
     active_ = this;
     haloHook::refresh = &refreshActive;
+    attachSeconds_ += std::chrono::duration<double>
+    (
+        std::chrono::steady_clock::now() - t0
+    ).count();
     refresh();
 }
 
@@ -503,6 +632,9 @@ void Foam::meshless::particleDistribution::runCost(dictionary& d) const
     d.add("ownParticles", returnReduce(ownSum_, sumOp<double>()));
     d.add("refreshes", refreshes_);
     d.add("refreshSeconds", refreshSeconds_);
+    d.add("migrateSeconds", migrateSeconds_);
+    d.add("startMigrateSeconds", startSeconds_);
+    d.add("attachSeconds", attachSeconds_);
     d.add("valuesSent", valuesSent_);
 }
 

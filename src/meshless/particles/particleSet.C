@@ -209,6 +209,32 @@ Foam::label Foam::meshless::particleSet::appendIds
 }
 
 
+void Foam::meshless::particleSet::removeUnordered
+(
+    const std::vector<label>& indices
+)
+{
+    // From the largest hole down: the last particle is then never one to
+    // remove unless it is the hole itself
+    label n = size_;
+    for (auto it = indices.rbegin(); it != indices.rend(); ++it)
+    {
+        const label i = *it;
+        --n;
+        if (i == n) continue;
+        id_[i] = id_[n];
+        for (auto& f : fields_)
+        {
+            particleField& field = *f.second;
+            const label nc = field.nComponents();
+            double* d = field.data();
+            for (label c = 0; c < nc; ++c) d[i*nc + c] = d[n*nc + c];
+        }
+    }
+    truncate(n);
+}
+
+
 void Foam::meshless::particleSet::truncate(const label n)
 {
     if (n > size_)

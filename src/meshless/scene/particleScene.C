@@ -38,6 +38,7 @@ Foam::meshless::particleScene::particleScene(const polyMesh& mesh)
     costs_(),
     relationsCost_(costs_.part("neighbourRelations")),
     exchangeCost_(Pstream::parRun() ? costs_.part("haloExchange") : -1),
+    waitCost_(Pstream::parRun() ? costs_.part("imbalanceWait") : -1),
     writeCost_(costs_.part("write")),
     vtp_(dict_.getOrDefault<bool>("vtp", false))
 {
@@ -380,7 +381,18 @@ void Foam::meshless::particleScene::startParallel(const scalar maxSpacing)
 void Foam::meshless::particleScene::attachHalos(const bool everyBody)
 {
     if (!distribution_.valid()) return;
-    costAccounting::scope timer(costs_, exchangeCost_);
+
+    // A step's (the start's, every body located once, is set-up)
+    std::unique_ptr<costAccounting::scope> timer;
+    if (!everyBody)
+    {
+        {
+            // The processors meet: the wait for the slowest is imbalance
+            costAccounting::scope wait(costs_, waitCost_);
+            returnReduce(label(0), sumOp<label>());
+        }
+        timer.reset(new costAccounting::scope(costs_, exchangeCost_));
+    }
     {
         // At the start every body (decomposePar placed the wall layers
         // outside the mesh by the cell nearest them), then the moving ones
