@@ -20,6 +20,9 @@ particles.
 - A parallel restart (hierarchical 1 3 1, startFrom latestTime on the
   decomposed case at 0.04 s) ends at 0.08 s equal, bit for bit, to the uninterrupted
   parallel run.
+- ulphPdFoam, its dam break at 2 mm to 0.01 s (the ULPH fluid on ghost
+  walls, with its density filter), hierarchical (1 3 1): the same
+  particles to RTOL.
 - particleFoam, the free fall split across the fall (hierarchical 1 2 1):
   the drop's particles migrate from the upper processor to the lower one
   and the reconstructed clouds equal the serial ones bit for bit (no pair
@@ -237,6 +240,22 @@ def restart(t, seeded, uninterrupted, solver, method, n, coeffs):
                 ("0.08",), 0)
 
 
+def ulph_dam_break(t, work):
+    solver = "ulphPdFoam"
+    serial = os.path.join(work, "ulphDamBreak")
+    if not prepared(t, "tutorials/ulphPdFoam/damBreak", serial, 0.002,
+                    0.01, 0.005):
+        return
+    case = seeded_copy(serial, os.path.join(work, "ulphDamBreakParallel"))
+    code, out = run([solver], serial)
+    t.check("ulph: serial run succeeds", code == 0, out[-1500:])
+    if not parallel_run(t, case, solver, "ulph", "hierarchical", 3,
+                        "coeffs { n (1 3 1); order xyz; }"):
+        return
+    same_clouds(t, "ulph", serial, case, ("water", "walls"),
+                ("0.005", "0.01"), RTOL)
+
+
 def free_fall(t, work):
     solver = "particleFoam"
     serial = os.path.join(work, "freeFall")
@@ -261,4 +280,5 @@ if __name__ == "__main__":
     if shutil.which("mpirun") is None:
         print("parallelRuns: no mpirun (openmpi-bin), nothing to test")
         sys.exit(1)
-    sys.exit(run_parts("parallelRuns", dam_break, free_fall))
+    sys.exit(run_parts("parallelRuns", dam_break, ulph_dam_break,
+                       free_fall))

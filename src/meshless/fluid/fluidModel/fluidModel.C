@@ -305,6 +305,8 @@ void Foam::meshless::fluidModel::moveBoundaries(const scalar t)
 
 void Foam::meshless::fluidModel::updateGeometry()
 {
+    // The halo particles where their processors moved them
+    refreshHalos();
     own_->updateGeometry();
     for (boundary& b : boundaries_)
     {
