@@ -23,6 +23,10 @@ particles.
 - ulphPdFoam, its dam break at 2 mm to 0.01 s (the ULPH fluid on ghost
   walls, with its density filter), hierarchical (1 3 1): the same
   particles to RTOL.
+- The distributed linear solve (tests/parallel/parallelLinearSolve):
+  a symmetric and a non-symmetric system of 3600 rows split over 2 and 3
+  processors, solved by BoomerAMG on every processor's rows, to the
+  exact solution, with the whole system's residual; the same serially.
 - particleFoam, the free fall split across the fall (hierarchical 1 2 1):
   the drop's particles migrate from the upper processor to the lower one
   and the reconstructed clouds equal the serial ones bit for bit (no pair
@@ -256,6 +260,25 @@ def ulph_dam_break(t, work):
                 ("0.005", "0.01"), RTOL)
 
 
+def linear_solve(t, work):
+    import subprocess
+    for n in (1, 2, 3):
+        if n == 1:
+            cmd = ["parallelLinearSolve"]
+            p = subprocess.run(cmd, cwd=work, capture_output=True, text=True)
+        else:
+            cmd = ["mpirun", "--oversubscribe", "-np", str(n),
+                   "parallelLinearSolve", "-parallel"]
+            p = subprocess.run(cmd, cwd=work, capture_output=True, text=True,
+                               env=MPI_ENV)
+        out = p.stdout + p.stderr
+        passes = out.count("[  PASS  ]")
+        t.check("linear solve on %d processor(s): %d checks passed, none"
+                " failed" % (n, passes),
+                p.returncode == 0 and passes == 8 and "FAIL" not in out,
+                out[-2000:])
+
+
 def free_fall(t, work):
     solver = "particleFoam"
     serial = os.path.join(work, "freeFall")
@@ -281,4 +304,4 @@ if __name__ == "__main__":
         print("parallelRuns: no mpirun (openmpi-bin), nothing to test")
         sys.exit(1)
     sys.exit(run_parts("parallelRuns", dam_break, ulph_dam_break,
-                       free_fall))
+                       linear_solve, free_fall))

@@ -233,7 +233,8 @@ const krylovMethod BiCGSTAB
 
 struct Foam::meshless::BoomerAMG::hypreObjects
 {
-    //- Each process solves its own system (for now)
+    //- The processes of the system: this one alone, or every one of a
+    //  parallel run (a distributed matrix)
     MPI_Comm comm = MPI_COMM_SELF;
 
     //- The preconditioner, shared by the Krylov solvers
@@ -248,15 +249,24 @@ struct Foam::meshless::BoomerAMG::hypreObjects
     HYPRE_IJMatrix A = nullptr;
     HYPRE_IJVector b = nullptr;
     HYPRE_IJVector x = nullptr;
+    HYPRE_IJVector r = nullptr;
     label vectorSize = -1;
+    label vectorOffset = -1;
+    MPI_Comm vectorComm = MPI_COMM_SELF;
 
     HYPRE_ParCSRMatrix parA = nullptr;
     HYPRE_ParVector parB = nullptr;
     HYPRE_ParVector parX = nullptr;
+    HYPRE_ParVector parR = nullptr;
 
-    //- 0 ... n - 1 and the entries of each row (grow only)
+    //- The global rows of this process, the entries of each row and, of a
+    //  distributed matrix, the global columns (grow only)
     std::vector<HYPRE_BigInt> rows;
     std::vector<HYPRE_Int> rowSizes;
+    std::vector<HYPRE_BigInt> columns;
+
+    //- Krylov solvers' communicators
+    MPI_Comm krylovComm[2] = {MPI_COMM_SELF, MPI_COMM_SELF};
 
 
     hypreObjects() = default;
@@ -291,9 +301,11 @@ struct Foam::meshless::BoomerAMG::hypreObjects
     {
         if (b) HYPRE_IJVectorDestroy(b);
         if (x) HYPRE_IJVectorDestroy(x);
-        b = x = nullptr;
-        parB = parX = nullptr;
+        if (r) HYPRE_IJVectorDestroy(r);
+        b = x = r = nullptr;
+        parB = parX = parR = nullptr;
         vectorSize = -1;
+        vectorOffset = -1;
     }
 
     //- The Krylov solver of a (non-)symmetric matrix of n rows, made when
@@ -309,7 +321,7 @@ struct Foam::meshless::BoomerAMG::hypreObjects
     )
     {
         const label k = symmetric ? 0 : 1;
-        if (krylov[k] && krylovSize[k] != n)
+        if (krylov[k] && (krylovSize[k] != n || krylovComm[k] != comm))
         {
             method[k]->destroy(krylov[k]);
             krylov[k] = nullptr;
@@ -317,6 +329,7 @@ struct Foam::meshless::BoomerAMG::hypreObjects
         if (!krylov[k])
         {
             krylovSize[k] = n;
+            krylovComm[k] = comm;
             const krylovMethod& m = *method[k];
             check(m.create(comm, &krylov[k]), m.name);
             m.setTol(krylov[k], tolerance);
@@ -334,13 +347,10 @@ struct Foam::meshless::BoomerAMG::hypreObjects
     void setMatrix(const sparseMatrix& M)
     {
         const label n = M.n();
+        const label lo = M.rowOffset();
         const label* rowStart = M.rowStart();
-        if (label(rows.size()) < n)
-        {
-            const label old = label(rows.size());
-            rows.resize(n);
-            for (label i = old; i < n; ++i) rows[i] = i;
-        }
+        rows.resize(n);
+        for (label i = 0; i < n; ++i) rows[i] = lo + i;
         rowSizes.resize(n);
         for (label i = 0; i < n; ++i)
         {
@@ -348,14 +358,29 @@ struct Foam::meshless::BoomerAMG::hypreObjects
         }
 
         destroyMatrix();
-        HYPRE_IJMatrixCreate(comm, 0, n - 1, 0, n - 1, &A);
+        HYPRE_IJMatrixCreate(comm, lo, lo + n - 1, lo, lo + n - 1, &A);
         HYPRE_IJMatrixSetObjectType(A, HYPRE_PARCSR);
         HYPRE_IJMatrixSetRowSizes(A, rowSizes.data());
         HYPRE_IJMatrixInitialize(A);
-        HYPRE_IJMatrixSetValues
-        (
-            A, n, rowSizes.data(), rows.data(), M.columns(), M.values()
-        );
+        if (M.distributed())
+        {
+            const label nnz = M.nnz();
+            columns.resize(nnz);
+            const label* c = M.columns();
+            for (label k = 0; k < nnz; ++k) columns[k] = M.globalColumn(c[k]);
+            HYPRE_IJMatrixSetValues
+            (
+                A, n, rowSizes.data(), rows.data(), columns.data(),
+                M.values()
+            );
+        }
+        else
+        {
+            HYPRE_IJMatrixSetValues
+            (
+                A, n, rowSizes.data(), rows.data(), M.columns(), M.values()
+            );
+        }
         HYPRE_IJMatrixAssemble(A);
         void* object = nullptr;
         HYPRE_IJMatrixGetObject(A, &object);
@@ -374,7 +399,10 @@ struct Foam::meshless::BoomerAMG::hypreObjects
     {
         if (!v)
         {
-            HYPRE_IJVectorCreate(comm, 0, n - 1, &v);
+            HYPRE_IJVectorCreate
+            (
+                comm, vectorOffset, vectorOffset + n - 1, &v
+            );
             HYPRE_IJVectorSetObjectType(v, HYPRE_PARCSR);
         }
         HYPRE_IJVectorInitialize(v);
@@ -385,16 +413,48 @@ struct Foam::meshless::BoomerAMG::hypreObjects
         par = static_cast<HYPRE_ParVector>(object);
     }
 
-    void setVectors(const double* bValues, const double* xValues, label n)
+    void setVectors
+    (
+        const double* bValues,
+        const double* xValues,
+        const label n,
+        const label offset
+    )
     {
-        if (n != vectorSize)
+        if (n != vectorSize || offset != vectorOffset || comm != vectorComm)
         {
             destroyVectors();
             vectorSize = n;
+            vectorOffset = offset;
+            vectorComm = comm;
         }
         setVector(b, parB, bValues, n);
         setVector(x, parX, xValues, n);
         check(HYPRE_GetError(), "IJ vector assembly");
+    }
+
+    //- ||b - A x||_2 of the whole system, with hypre's product
+    double residualNorm()
+    {
+        if (!r)
+        {
+            HYPRE_IJVectorCreate
+            (
+                comm, vectorOffset, vectorOffset + vectorSize - 1, &r
+            );
+            HYPRE_IJVectorSetObjectType(r, HYPRE_PARCSR);
+            HYPRE_IJVectorInitialize(r);
+            HYPRE_IJVectorAssemble(r);
+            void* object = nullptr;
+            HYPRE_IJVectorGetObject(r, &object);
+            parR = static_cast<HYPRE_ParVector>(object);
+        }
+        HYPRE_ParVectorCopy(parB, parR);
+        HYPRE_ParCSRMatrixMatvec(-1.0, parA, parX, 1.0, parR);
+        HYPRE_Real rr = 0;
+        HYPRE_ParVectorInnerProd(parR, parR, &rr);
+        check(HYPRE_GetError(), "residual");
+        return std::sqrt(double(rr));
     }
 };
 
@@ -450,7 +510,8 @@ Foam::meshless::BoomerAMG::BoomerAMG(const dictionary& dict)
     (
         dict.found("restart") ? readPositiveLabel(dict, "restart") : 30
     ),
-    hypre_(new hypreObjects)
+    hypre_(new hypreObjects),
+    distributed_(false)
 {
     initialiseHypre();
 
@@ -506,6 +567,19 @@ Foam::meshless::linearSolver::performance Foam::meshless::BoomerAMG::solve
     const krylovMethod& method = *h.method[symmetric ? 0 : 1];
     HYPRE_Solver solver = nullptr;
 
+    // A distributed system spans the processors: hypre's copies first, so
+    // that the residuals are the whole system's
+    distributed_ = A.distributed();
+    h.comm = distributed_ ? MPI_COMM_WORLD : MPI_COMM_SELF;
+    if (distributed_)
+    {
+        HYPRE_ClearAllErrors();
+        solver = h.solver(symmetric, A.nGlobal(), tolerance(), restart_);
+        h.setMatrix(A);
+        h.setVectors(b, x, n, A.rowOffset());
+        check(method.setup(solver, h.parA, h.parB, h.parX), method.name);
+    }
+
     return run
     (
         A, b, x,
@@ -517,7 +591,7 @@ Foam::meshless::linearSolver::performance Foam::meshless::BoomerAMG::solve
                 HYPRE_ClearAllErrors();
                 solver = h.solver(symmetric, n, tolerance(), restart_);
                 h.setMatrix(A);
-                h.setVectors(b, x, n);
+                h.setVectors(b, x, n, 0);
                 check
                 (
                     method.setup(solver, h.parA, h.parB, h.parX),
@@ -536,3 +610,29 @@ Foam::meshless::linearSolver::performance Foam::meshless::BoomerAMG::solve
         }
     );
 }
+
+
+double Foam::meshless::BoomerAMG::norm(const double* v, const label n) const
+{
+    if (!distributed_) return linearSolver::norm(v, n);
+    double s = 0;
+    for (label i = 0; i < n; ++i) s += v[i]*v[i];
+    double sum = 0;
+    MPI_Allreduce(&s, &sum, 1, MPI_DOUBLE, MPI_SUM, hypre_->comm);
+    return std::sqrt(sum);
+}
+
+
+double Foam::meshless::BoomerAMG::residualNorm
+(
+    const sparseMatrix& A,
+    const double* b,
+    const double* x
+) const
+{
+    if (!distributed_) return A.residualNorm(b, x);
+    return hypre_->residualNorm();
+}
+
+
+// ************************************************************************* //

@@ -33,6 +33,34 @@ Foam::meshless::linearSolver::linearSolver(const dictionary& dict)
 {}
 
 
+double Foam::meshless::linearSolver::norm
+(
+    const double* v,
+    const label n
+) const
+{
+    return norm2(v, n);
+}
+
+
+double Foam::meshless::linearSolver::residualNorm
+(
+    const sparseMatrix& A,
+    const double* b,
+    const double* x
+) const
+{
+    if (A.distributed())
+    {
+        FatalErrorInFunction
+            << "pressureSolver " << type() << " solves a system on one"
+            << " processor; a parallel run's is distributed: expected"
+            << " solver BoomerAMG" << exit(FatalError);
+    }
+    return A.residualNorm(b, x);
+}
+
+
 Foam::meshless::linearSolver::performance
 Foam::meshless::linearSolver::run
 (
@@ -45,14 +73,14 @@ Foam::meshless::linearSolver::run
     performance p{type(), 0, 0, 0, true};
 
     const label n = A.n();
-    const double bNorm = norm2(b, n);
+    const double bNorm = norm(b, n);
     if (bNorm == 0)
     {
         std::fill(x, x + n, 0.0);
         return p;
     }
 
-    p.initialResidual = A.residualNorm(b, x)/bNorm;
+    p.initialResidual = residualNorm(A, b, x)/bNorm;
     p.finalResidual = p.initialResidual;
     p.converged = p.finalResidual <= tolerance_;
 
@@ -60,7 +88,7 @@ Foam::meshless::linearSolver::run
     {
         const label done = iterate(maxIter_ - p.iterations);
         p.iterations += done;
-        p.finalResidual = A.residualNorm(b, x)/bNorm;
+        p.finalResidual = residualNorm(A, b, x)/bNorm;
         p.converged = p.finalResidual <= tolerance_;
 
         if (done <= 0 || !std::isfinite(p.finalResidual))

@@ -19,8 +19,26 @@ Foam::meshless::sparseMatrix::sparseMatrix()
     rowStart_(1, 0),
     columns_(),
     values_(),
-    symmetric_(false)
+    symmetric_(false),
+    distributed_(false),
+    rowOffset_(0),
+    nGlobal_(0),
+    haloRows_()
 {}
+
+
+void Foam::meshless::sparseMatrix::setDistribution
+(
+    const label rowOffset,
+    const label nGlobal,
+    const std::vector<label>& haloRows
+)
+{
+    distributed_ = true;
+    rowOffset_ = rowOffset;
+    nGlobal_ = nGlobal;
+    haloRows_ = haloRows;
+}
 
 
 void Foam::meshless::sparseMatrix::resize(const label n, const label nnz)
@@ -48,9 +66,10 @@ bool Foam::meshless::sparseMatrix::checkDiagonalFirst() const
         {
             return false;
         }
+        const label nCols = n_ + label(haloRows_.size());
         for (label k = start; k < end; ++k)
         {
-            if (columns_[k] < 0 || columns_[k] >= n_)
+            if (columns_[k] < 0 || columns_[k] >= nCols)
             {
                 return false;
             }
