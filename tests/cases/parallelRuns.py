@@ -244,20 +244,31 @@ def restart(t, seeded, uninterrupted, solver, method, n, coeffs):
                 ("0.08",), 0)
 
 
-def ulph_dam_break(t, work):
-    solver = "ulphPdFoam"
-    serial = os.path.join(work, "ulphDamBreak")
-    if not prepared(t, "tutorials/ulphPdFoam/damBreak", serial, 0.002,
-                    0.01, 0.005):
-        return
-    case = seeded_copy(serial, os.path.join(work, "ulphDamBreakParallel"))
+def serial_and_parallel(t, work, name, tutorial, solver, dx, times,
+                        method, n, coeffs):
+    """The tutorial run serially and decomposed to the last of times
+    (written at each); the cases (serial, parallel), or None"""
+    serial = os.path.join(work, name)
+    if not prepared(t, tutorial, serial, dx, float(times[-1]),
+                    float(times[0])):
+        return None
+    case = seeded_copy(serial, os.path.join(work, name + "Parallel"))
     code, out = run([solver], serial)
-    t.check("ulph: serial run succeeds", code == 0, out[-1500:])
-    if not parallel_run(t, case, solver, "ulph", "hierarchical", 3,
-                        "coeffs { n (1 3 1); order xyz; }"):
-        return
-    same_clouds(t, "ulph", serial, case, ("water", "walls"),
-                ("0.005", "0.01"), RTOL)
+    t.check("%s: serial run succeeds" % name, code == 0, out[-1500:])
+    if code != 0 or not parallel_run(t, case, solver, name, method, n,
+                                     coeffs):
+        return None
+    return serial, case
+
+
+def ulph_dam_break(t, work):
+    cases = serial_and_parallel(
+        t, work, "ulph", "tutorials/ulphPdFoam/damBreak", "ulphPdFoam",
+        0.002, ("0.005", "0.01"), "hierarchical", 3,
+        "coeffs { n (1 3 1); order xyz; }")
+    if cases:
+        same_clouds(t, "ulph", cases[0], cases[1], ("water", "walls"),
+                    ("0.005", "0.01"), RTOL)
 
 
 def linear_solve(t, work):
@@ -280,17 +291,13 @@ def linear_solve(t, work):
 
 
 def free_fall(t, work):
-    solver = "particleFoam"
-    serial = os.path.join(work, "freeFall")
-    if not prepared(t, "tutorials/particleFoam/freeFall", serial, None, 0.1,
-                    0.02):
+    cases = serial_and_parallel(
+        t, work, "freeFall", "tutorials/particleFoam/freeFall",
+        "particleFoam", None, ("0.02", "0.1"), "hierarchical", 2,
+        "coeffs { n (1 2 1); order xyz; }")
+    if not cases:
         return
-    case = seeded_copy(serial, os.path.join(work, "freeFallParallel"))
-    code, out = run([solver], serial)
-    t.check("freeFall: serial run succeeds", code == 0, out[-1500:])
-    if not parallel_run(t, case, solver, "freeFall", "hierarchical", 2,
-                        "coeffs { n (1 2 1); order xyz; }"):
-        return
+    serial, case = cases
     counts = [[processor_count(case, p, time, "drop") for p in range(2)]
               for time in ("0", "0.1")]
     t.check("freeFall: the drop migrates to the lower processor %s" % counts,
