@@ -23,6 +23,17 @@ particles.
 - ulphPdFoam, its dam break at 2 mm to 0.01 s (the ULPH fluid on ghost
   walls, with its density filter), hierarchical (1 3 1): the same
   particles to RTOL.
+- isphTlsphFoam, the ISPH dam break at 2 mm to 0.04 s with its walls'
+  pressures solved, hierarchical (1 3 1): the pressure Poisson equation
+  is one system over the processors (BoomerAMG, tolerance 1e-12: the
+  multigrid's coarsening follows the partition, so the iterates differ
+  at the tolerance), the same particles to ISPH_RTOL (1e-12 at 0.02 s,
+  up to 7e-10 at 0.04 s in the accelerations, (u - u0)/dt). Later the
+  runs part by more (1e-6 at 0.08 s): the free surface's and the walls'
+  wetting are thresholds that a particle crosses in one run and not the
+  other.
+  With pressureSolver BiCGStab (one processor's) the run stops and asks
+  for BoomerAMG.
 - The distributed linear solve (tests/parallel/parallelLinearSolve):
   a symmetric and a non-symmetric system of 3600 rows split over 2 and 3
   processors, solved by BoomerAMG on every processor's rows, to the
@@ -44,6 +55,7 @@ from caseTest import set_entry  # noqa: E402
 from foamCloud import read_cloud  # noqa: E402
 
 RTOL = 1e-10
+ISPH_RTOL = 1e-8
 MONITOR_RTOL = 1e-9
 HEADER = "FoamFile { version 2.0; format ascii; class dictionary;" \
     " object %s; }\n"
@@ -72,8 +84,10 @@ def decompose_dict(case, method, n, coeffs):
                 % (n, method, coeffs))
 
 
-def prepared(t, tutorial, case, dx, end, interval):
+def prepared(t, tutorial, case, dx, end, interval, entries=()):
     copy_case(os.path.join(project_dir, tutorial), case)
+    for dictionary, key, value in entries:
+        set_entry(case, dictionary, key, value)
     if dx:
         with open(os.path.join(case, "system", "resolution"), "w") as f:
             f.write("dx %s;\n" % dx)
@@ -245,12 +259,13 @@ def restart(t, seeded, uninterrupted, solver, method, n, coeffs):
 
 
 def serial_and_parallel(t, work, name, tutorial, solver, dx, times,
-                        method, n, coeffs):
+                        method, n, coeffs, entries=()):
     """The tutorial run serially and decomposed to the last of times
-    (written at each); the cases (serial, parallel), or None"""
+    (written at each), with entries [(dictionary, key, value)] set; the
+    cases (serial, parallel), or None"""
     serial = os.path.join(work, name)
     if not prepared(t, tutorial, serial, dx, float(times[-1]),
-                    float(times[0])):
+                    float(times[0]), entries):
         return None
     case = seeded_copy(serial, os.path.join(work, name + "Parallel"))
     code, out = run([solver], serial)
@@ -269,6 +284,26 @@ def ulph_dam_break(t, work):
     if cases:
         same_clouds(t, "ulph", cases[0], cases[1], ("water", "walls"),
                     ("0.005", "0.01"), RTOL)
+
+
+def isph_dam_break(t, work):
+    cases = serial_and_parallel(
+        t, work, "isph", "tutorials/isphTlsphFoam/damBreak", "isphTlsphFoam",
+        0.002, ("0.02", "0.04"), "hierarchical", 3,
+        "coeffs { n (1 3 1); order xyz; }",
+        [("constant/particleProperties", "bodies/water/pressureSolver",
+          "{ solver BoomerAMG; tolerance 1e-12; maxIter 2000; }")])
+    if not cases:
+        return
+    same_clouds(t, "isph", cases[0], cases[1], ("water", "walls"),
+                ("0.02", "0.04"), ISPH_RTOL)
+    # A solver of one processor's system is refused by name
+    set_entry(cases[1], "constant/particleProperties",
+              "bodies/water/pressureSolver/solver", "BiCGStab")
+    code, out = mpirun(3, "isphTlsphFoam", cases[1])
+    t.check("isph: pressureSolver BiCGStab in parallel stops, asking for"
+            " BoomerAMG", code != 0 and "expected solver BoomerAMG" in out,
+            out[-1500:])
 
 
 def linear_solve(t, work):
@@ -311,4 +346,4 @@ if __name__ == "__main__":
         print("parallelRuns: no mpirun (openmpi-bin), nothing to test")
         sys.exit(1)
     sys.exit(run_parts("parallelRuns", dam_break, ulph_dam_break,
-                       linear_solve, free_fall))
+                       isph_dam_break, linear_solve, free_fall))

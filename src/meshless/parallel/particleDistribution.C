@@ -472,6 +472,7 @@ void Foam::meshless::particleDistribution::attachHalos()
         halo& h = halos_[b];
         particleSet& set = *sets_[b];
         h.nOwned = set.size();
+        set.markHalo();
         for (std::vector<label>& s : h.send) s.clear();
         const particleField& x = set.positions();
         for (label i = 0; i < h.nOwned; ++i)

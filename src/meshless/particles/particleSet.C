@@ -16,6 +16,7 @@ Foam::meshless::particleSet::particleSet(const word& name, const label dim)
     size_(0),
     id_(),
     nextId_(0),
+    nOwned_(-1),
     fields_()
 {
     if (dim != 2 && dim != 3)
@@ -246,6 +247,7 @@ void Foam::meshless::particleSet::truncate(const label n)
     id_.resize(n);
     for (auto& f : fields_) f.second->resize(n);
     size_ = n;
+    nOwned_ = -1;
 }
 
 

@@ -12,6 +12,8 @@
 #include "addToRunTimeSelectionTable.H"
 #include "dispatchDim.H"
 #include "Pair.H"
+#include "globalIndex.H"
+#include "haloHook.H"
 #include <algorithm>
 #include <cmath>
 
@@ -229,6 +231,7 @@ Foam::meshless::bodyModels::isph::isph
     A_(),
     last_(),
     failure_(),
+    solvedOnce_(false),
     assemblyCost_(-1),
     solveCost_(-1),
     projectionCost_(-1)
@@ -295,6 +298,22 @@ void Foam::meshless::bodyModels::isph::connectModel(particleScene&)
     }
     shifting_ = findEffect<effects::particleShifting>(body_);
     own_->cache(neighbourRelation::kernelGradient);
+    if (Pstream::parRun())
+    {
+        if (solver_->type() != "BoomerAMG")
+        {
+            FatalIOErrorInFunction(dict_.subDict("pressureSolver"))
+                << "Body " << body_.name() << ": pressureSolver "
+                << solver_->type() << " solves on one processor; in a"
+                << " parallel run the pressure system spans the processors:"
+                << " expected solver BoomerAMG" << exit(FatalIOError);
+        }
+        // Each unknown's global row in the distributed pressure system
+        body_.particles().addScratchField
+        (
+            "pressureRow", particleField::kind::scalar
+        );
+    }
     if (densityRelax_ > 0) own_->cache(neighbourRelation::kernelValue);
     for (boundary& b : boundaries_) boundaryAdded(b);
 }
@@ -302,6 +321,17 @@ void Foam::meshless::bodyModels::isph::connectModel(particleScene&)
 
 void Foam::meshless::bodyModels::isph::boundaryAdded(boundary& b)
 {
+    if (Pstream::parRun() && wallUnknowns_)
+    {
+        particleSet& gs = b.ghosts->ghostBody().particles();
+        if (!gs.found("pressureRow"))
+        {
+            gs.addScratchField("pressureRow", particleField::kind::scalar);
+            // The last solve's wall pressures, carried by the particles
+            // (a processor's unknowns change with its halo)
+            gs.addScratchField("pSolved", particleField::kind::scalar);
+        }
+    }
     b.toGhosts->cache(neighbourRelation::kernelGradient);
     if (wallUnknowns_ || b.ghosts->reaction())
     {
@@ -404,7 +434,8 @@ void Foam::meshless::bodyModels::isph::shift
         }
     );
 
-    const scalar zeta = U_.maxMagnitude()*dt;
+    const scalar zeta =
+        returnReduce(U_.maxMagnitude(), maxOp<scalar>())*dt;
     const scalar c = shifting_->coefficient()*zeta;
     const scalar cap = shifting_->maxShift()*h;
     const bool correctU = shifting_->correctVelocity();
@@ -674,6 +705,7 @@ void Foam::meshless::bodyModels::isph::advanceDim
         }
         // On or within h of the free surface at x*
         {
+            refreshHalos();
             nearSurface_.assign(n, 0);
             const neighbourRelation& rel = *own_;
             const label* off = rel.offsetData();
@@ -762,8 +794,19 @@ void Foam::meshless::bodyModels::isph::advanceDim
         if (wallUnknowns_)
         {
             std::copy(p_.data(), p_.data() + n, pAll_.begin());
-            last_ = solver_->solve(A_, bAll_.data(), pAll_.data());
+            if (Pstream::parRun())
+            {
+                solveDistributed(bAll_.data(), pAll_.data(), pAll_.size());
+            }
+            else
+            {
+                last_ = solver_->solve(A_, bAll_.data(), pAll_.data());
+            }
             std::copy(pAll_.begin(), pAll_.begin() + n, p_.data());
+        }
+        else if (Pstream::parRun())
+        {
+            solveDistributed(rhs_.data(), p_.data(), n);
         }
         else
         {
@@ -801,6 +844,7 @@ void Foam::meshless::bodyModels::isph::advanceDim
             );
         }
     }
+    if (Pstream::parRun()) refreshUnknowns();
     Info<< "    " << body_.name() << ": pressure " << last_.solver << ", "
         << last_.iterations << " iterations, residual "
         << last_.initialResidual << " -> " << last_.finalResidual << endl;
@@ -877,6 +921,139 @@ void Foam::meshless::bodyModels::isph::advanceDim
     }
     if (shifting_) shift<Dim>(dt, costs);
     releaseSplash();
+}
+
+
+void Foam::meshless::bodyModels::isph::solveDistributed
+(
+    const double* b,
+    double* p,
+    const label N
+)
+{
+    const label n = p_.size();
+
+    // This processor's unknowns: its own fluid particles, then each
+    // boundary's own particles
+    ownRow_.assign(N, -1);
+    label M = 0;
+    const label nF = body_.particles().nOwned();
+    for (label i = 0; i < nF; ++i) ownRow_[i] = M++;
+    const bool walls = N > n;
+    if (walls)
+    {
+        for (size_t k = 0; k < boundaries_.size(); ++k)
+        {
+            const label nW =
+                boundaries_[k].ghosts->ghostBody().particles().nOwned();
+            for (label j = 0; j < nW; ++j) ownRow_[wallOffset_[k] + j] = M++;
+        }
+    }
+    const globalIndex rows(M);
+    const label offset = rows.offset(Pstream::myProcNo());
+
+    // Each unknown's global row, the halo's as its owner numbered it
+    particleField& rowF = body_.particles().field("pressureRow");
+    for (label i = 0; i < nF; ++i) rowF(i, 0) = offset + ownRow_[i];
+    if (walls)
+    {
+        for (size_t k = 0; k < boundaries_.size(); ++k)
+        {
+            particleSet& gs = boundaries_[k].ghosts->ghostBody().particles();
+            particleField& rowW = gs.field("pressureRow");
+            for (label j = 0; j < gs.nOwned(); ++j)
+            {
+                rowW(j, 0) = offset + ownRow_[wallOffset_[k] + j];
+            }
+        }
+    }
+    refreshHalos();
+    auto globalRow = [&](const label c) -> label
+    {
+        if (c < n) return label(rowF(c, 0));
+        size_t k = boundaries_.size() - 1;
+        while (wallOffset_[k] > c) --k;
+        const particleField& rowW =
+            boundaries_[k].ghosts->ghostBody().particles().field
+            (
+                "pressureRow"
+            );
+        return label(rowW(c - wallOffset_[k], 0));
+    };
+
+    // The own rows, columns own (compact) or another processor's
+    const label* rs = A_.rowStart();
+    const label* cols = A_.columns();
+    const double* vals = A_.values();
+    label nnz = 0;
+    for (label r = 0; r < N; ++r)
+    {
+        if (ownRow_[r] >= 0) nnz += rs[r + 1] - rs[r];
+    }
+    Adist_.resize(M, nnz);
+    bDist_.resize(M);
+    xDist_.resize(M);
+    haloColumn_.assign(N, -1);
+    haloRows_.clear();
+    label* rsD = Adist_.rowStart();
+    label* colsD = Adist_.columns();
+    double* valsD = Adist_.values();
+    label q = 0;
+    rsD[0] = 0;
+    for (label r = 0; r < N; ++r)
+    {
+        const label u = ownRow_[r];
+        if (u < 0) continue;
+        for (label e = rs[r]; e < rs[r + 1]; ++e)
+        {
+            const label c = cols[e];
+            label cD = ownRow_[c];
+            if (cD < 0)
+            {
+                if (haloColumn_[c] < 0)
+                {
+                    haloColumn_[c] = label(haloRows_.size());
+                    haloRows_.push_back(globalRow(c));
+                }
+                cD = M + haloColumn_[c];
+            }
+            colsD[q] = cD;
+            valsD[q] = vals[e];
+            ++q;
+        }
+        rsD[u + 1] = q;
+        bDist_[u] = b[r];
+        xDist_[u] = p[r];
+    }
+    Adist_.setSymmetric(A_.symmetric());
+    Adist_.setDistribution(offset, rows.size(), haloRows_);
+
+    last_ = solver_->solve(Adist_, bDist_.data(), xDist_.data());
+    for (label r = 0; r < N; ++r)
+    {
+        if (ownRow_[r] >= 0) p[r] = xDist_[ownRow_[r]];
+    }
+}
+
+
+void Foam::meshless::bodyModels::isph::refreshUnknowns()
+{
+    refreshHalos();
+    if (!wallUnknowns_) return;
+    const label n = p_.size();
+    std::copy(p_.data(), p_.data() + n, pAll_.begin());
+    for (size_t k = 0; k < boundaries_.size(); ++k)
+    {
+        particleSet& gs = boundaries_[k].ghosts->ghostBody().particles();
+        const particleField& pw = gs.field("p");
+        particleField& ps = gs.field("pSolved");
+        std::copy(pw.data(), pw.data() + pw.size(), ps.data());
+        std::copy
+        (
+            pw.data(), pw.data() + pw.size(), pAll_.begin() + wallOffset_[k]
+        );
+    }
+    solvedOnce_ = true;
 }
 
 
@@ -1005,7 +1182,26 @@ void Foam::meshless::bodyModels::isph::advance
             wallOffset_[k] = N;
             N += boundaries_[k].fromGhosts->size();
         }
-        if (label(pAll_.size()) != N)
+        if (Pstream::parRun() && solvedOnce_)
+        {
+            // The last solve's, as the particles of this step's halo carry
+            // them (the walls' p is the interpolated one now)
+            pAll_.assign(N, 0);
+            for (size_t k = 0; k < boundaries_.size(); ++k)
+            {
+                const particleField& ps =
+                    boundaries_[k].ghosts->ghostBody().particles().field
+                    (
+                        "pSolved"
+                    );
+                std::copy
+                (
+                    ps.data(), ps.data() + ps.size(),
+                    pAll_.begin() + wallOffset_[k]
+                );
+            }
+        }
+        else if (label(pAll_.size()) != N)
         {
             pAll_.assign(N, 0);
             for (size_t k = 0; k < boundaries_.size(); ++k)

@@ -245,6 +245,7 @@ struct Foam::meshless::BoomerAMG::hypreObjects
     HYPRE_Solver krylov[2] = {nullptr, nullptr};
     const krylovMethod* method[2] = {&PCG, &GMRES};
     label krylovSize[2] = {-1, -1};
+    label krylovOffset[2] = {-1, -1};
 
     HYPRE_IJMatrix A = nullptr;
     HYPRE_IJVector b = nullptr;
@@ -316,12 +317,22 @@ struct Foam::meshless::BoomerAMG::hypreObjects
     (
         const bool symmetric,
         const label n,
+        const label offset,
         const scalar tolerance,
         const label restart
     )
     {
         const label k = symmetric ? 0 : 1;
-        if (krylov[k] && (krylovSize[k] != n || krylovComm[k] != comm))
+        int change =
+            !krylov[k] || krylovSize[k] != n || krylovOffset[k] != offset
+         || krylovComm[k] != comm;
+        if (comm != MPI_COMM_SELF)
+        {
+            // The work vectors follow this process's rows: every process
+            // makes the solver again, or none
+            MPI_Allreduce(MPI_IN_PLACE, &change, 1, MPI_INT, MPI_LOR, comm);
+        }
+        if (krylov[k] && change)
         {
             method[k]->destroy(krylov[k]);
             krylov[k] = nullptr;
@@ -329,6 +340,7 @@ struct Foam::meshless::BoomerAMG::hypreObjects
         if (!krylov[k])
         {
             krylovSize[k] = n;
+            krylovOffset[k] = offset;
             krylovComm[k] = comm;
             const krylovMethod& m = *method[k];
             check(m.create(comm, &krylov[k]), m.name);
@@ -421,7 +433,14 @@ struct Foam::meshless::BoomerAMG::hypreObjects
         const label offset
     )
     {
-        if (n != vectorSize || offset != vectorOffset || comm != vectorComm)
+        int change =
+            n != vectorSize || offset != vectorOffset || comm != vectorComm;
+        if (comm != MPI_COMM_SELF)
+        {
+            // Creating hypre's vectors is collective: every process or none
+            MPI_Allreduce(MPI_IN_PLACE, &change, 1, MPI_INT, MPI_LOR, comm);
+        }
+        if (change)
         {
             destroyVectors();
             vectorSize = n;
@@ -574,7 +593,10 @@ Foam::meshless::linearSolver::performance Foam::meshless::BoomerAMG::solve
     if (distributed_)
     {
         HYPRE_ClearAllErrors();
-        solver = h.solver(symmetric, A.nGlobal(), tolerance(), restart_);
+        solver = h.solver
+        (
+            symmetric, n, A.rowOffset(), tolerance(), restart_
+        );
         h.setMatrix(A);
         h.setVectors(b, x, n, A.rowOffset());
         check(method.setup(solver, h.parA, h.parB, h.parX), method.name);
@@ -589,7 +611,7 @@ Foam::meshless::linearSolver::performance Foam::meshless::BoomerAMG::solve
             {
                 // Set up once a solve: the hierarchy of this matrix
                 HYPRE_ClearAllErrors();
-                solver = h.solver(symmetric, n, tolerance(), restart_);
+                solver = h.solver(symmetric, n, 0, tolerance(), restart_);
                 h.setMatrix(A);
                 h.setVectors(b, x, n, 0);
                 check
