@@ -18,8 +18,10 @@ particles.
   written by the master) equal the serial ones to their 12 printed
   digits.
 - A parallel restart (hierarchical 1 3 1, startFrom latestTime on the
-  decomposed case at 0.04 s) ends at 0.08 s equal, bit for bit, to the uninterrupted
-  parallel run.
+  decomposed case at 0.04 s) ends at 0.08 s equal, bit for bit, to the
+  uninterrupted parallel run. Processors whose latest times differ (a
+  kill between their commits of a write) stop the run (OpenFOAM's Time
+  checks it); the commits wait for every processor's files.
 - ulphPdFoam, its dam break at 2 mm to 0.01 s (the ULPH fluid on ghost
   walls, with its density filter), hierarchical (1 3 1): the same
   particles to RTOL.
@@ -256,6 +258,15 @@ def restart(t, seeded, uninterrupted, solver, method, n, coeffs):
     t.check("%s: reconstructPar succeeds" % name, code == 0, out[-1500:])
     same_clouds(t, name, uninterrupted, case, ("water", "walls"),
                 ("0.08",), 0)
+
+    # As a kill between the processors' commits of a write leaves them:
+    # one processor without the latest time
+    shutil.rmtree(os.path.join(case, "processor1", "0.08"))
+    set_entry(case, "system/controlDict", "endTime", 0.1)
+    code, out = mpirun(n, solver, case)
+    t.check("%s: processors at different latest times stop the run"
+            " (OpenFOAM's Time: start time not the same)" % name,
+            code != 0 and "Start time is not the same" in out, out[-1500:])
 
 
 def serial_and_parallel(t, work, name, tutorial, solver, dx, times,

@@ -8,6 +8,8 @@
 #include "OSspecific.H"
 #include "IOdictionary.H"
 #include "DynamicList.H"
+#include "Pstream.H"
+#include "PstreamReduceOps.H"
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -340,8 +342,12 @@ void Foam::meshless::atomicTimeWriter::commit()
     const fileName tmp(runTime_.path()/instance());
     const fileName dst(runTime_.path()/pending_);
 
-    // Every file on disk before the directory gets its name
+    // Every file on disk before the directory gets its name; in a
+    // parallel run every processor's, so that the processors' renames
+    // follow each other closely (a kill between them leaves processors at
+    // different latest times, which a restart refuses)
     syncTree(tmp);
+    if (Pstream::parRun()) returnReduce(true, andOp<bool>());
 
     bool done = false;
     if (isDir(dst, false))
@@ -400,7 +406,8 @@ void Foam::meshless::atomicTimeWriter::commit()
     pending_.clear();
 
     // purgeWrite: the oldest times this run wrote, once the new one is in
-    // place
+    // place (on every processor)
+    if (Pstream::parRun()) returnReduce(true, andOp<bool>());
     const label purge =
         max(runTime_.controlDict().getOrDefault<label>("purgeWrite", 0), 0);
     if (purge > 0)
