@@ -36,6 +36,10 @@ particles.
   other.
   With pressureSolver BiCGStab (one processor's) the run stops and asks
   for BoomerAMG.
+- riemannSphFoam, the periodic Taylor-Green vortex (1/50, 40 steps to
+  0.25 s), hierarchical (3 1 1): halos reach across the periodic sides,
+  particles migrate across the processors' and the period's boundaries;
+  the same particles to RTOL.
 - The distributed linear solve (tests/parallel/parallelLinearSolve):
   a symmetric and a non-symmetric system of 3600 rows split over 2 and 3
   processors, solved by BoomerAMG on every processor's rows, to the
@@ -317,6 +321,22 @@ def isph_dam_break(t, work):
             out[-1500:])
 
 
+def taylor_green(t, work):
+    cases = serial_and_parallel(
+        t, work, "taylorGreen", "tutorials/riemannSphFoam/taylorGreen",
+        "riemannSphFoam", None, ("0.125", "0.25"), "hierarchical", 3,
+        "coeffs { n (3 1 1); order xyz; }")
+    if not cases:
+        return
+    serial, case = cases
+    same_clouds(t, "taylorGreen", serial, case, ("water",),
+                ("0.125", "0.25"), RTOL)
+    counts = [[processor_count(case, p, time, "water") for p in range(3)]
+              for time in ("0", "0.25")]
+    t.check("taylorGreen: particles migrated %s" % counts,
+            counts[0] != counts[1] and sum(counts[0]) == sum(counts[1]))
+
+
 def linear_solve(t, work):
     import subprocess
     for n in (1, 2, 3):
@@ -357,4 +377,5 @@ if __name__ == "__main__":
         print("parallelRuns: no mpirun (openmpi-bin), nothing to test")
         sys.exit(1)
     sys.exit(run_parts("parallelRuns", dam_break, ulph_dam_break,
-                       isph_dam_break, linear_solve, free_fall))
+                       isph_dam_break, taylor_green, linear_solve,
+                       free_fall))

@@ -47,9 +47,19 @@ Foam::scalar Foam::meshless::particleDistribution::distSqr
     scalar s = 0;
     for (label d = 0; d < dim_; ++d)
     {
-        const scalar lo = b.min()[d] - p[d];
-        const scalar hi = p[d] - b.max()[d];
-        const scalar e = Foam::max(Foam::max(lo, hi), scalar(0));
+        auto gap = [&](const scalar x)
+        {
+            return Foam::max
+            (
+                Foam::max(b.min()[d] - x, x - b.max()[d]), scalar(0)
+            );
+        };
+        scalar e = gap(p[d]);
+        if (periodic_.periodic(d))
+        {
+            const scalar L = periodic_.length(d);
+            e = Foam::min(e, Foam::min(gap(p[d] + L), gap(p[d] - L)));
+        }
         s += e*e;
     }
     return s;
@@ -462,7 +472,8 @@ void Foam::meshless::particleDistribution::attachHalos()
             boundBox b(boxes[me]);
             b.min() -= vector::uniform(radius_);
             b.max() += vector::uniform(radius_);
-            if (b.overlaps(boxes[q])) near.append(q);
+            // Across a periodic direction any processor may be near
+            if (periodic_.any() || b.overlaps(boxes[q])) near.append(q);
         }
     }
 

@@ -307,6 +307,8 @@ Foam::scalar Foam::meshless::particleScene::maxDeltaT(const scalar maxCo) const
 
 void Foam::meshless::particleScene::advance(const scalar t, const scalar dt)
 {
+    // Wrapped first: a particle belongs to the part it is in
+    if (distribution_.valid()) wrapPeriodic();
     attachHalos(false);
     for (particleBody& b : bodies_)
     {
@@ -347,7 +349,7 @@ void Foam::meshless::particleScene::startParallel(const scalar maxSpacing)
                 << exit(FatalIOError);
         }
     }
-    for (const char* key : {"coupling", "openBoundaries", "periodic"})
+    for (const char* key : {"coupling", "openBoundaries"})
     {
         if (dict_.found(key))
         {
@@ -374,6 +376,7 @@ void Foam::meshless::particleScene::startParallel(const scalar maxSpacing)
     (
         new particleDistribution(mesh_, dim_, zPlane_, radius, sets)
     );
+    distribution_->setPeriodic(relations_.periodic());
     attachHalos(true);
 }
 
