@@ -18,11 +18,43 @@ Foam::meshless::particleDistribution*
 Foam::meshless::particleDistribution::active_ = nullptr;
 
 
+namespace
+{
+
+//- Adds the seconds of its lifetime to a total
+struct timed
+{
+    double& total;
+    const std::chrono::steady_clock::time_point start =
+        std::chrono::steady_clock::now();
+
+    ~timed()
+    {
+        total += std::chrono::duration<double>
+        (
+            std::chrono::steady_clock::now() - start
+        ).count();
+    }
+};
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::meshless::particleDistribution::refreshActive()
 {
     if (active_) active_->refresh();
+}
+
+
+void Foam::meshless::particleDistribution::deactivate()
+{
+    if (active_ == this)
+    {
+        active_ = nullptr;
+        haloHook::refresh = nullptr;
+    }
 }
 
 
@@ -173,9 +205,9 @@ Foam::meshless::particleDistribution::particleDistribution
     makeBins(0.5*edge);
 
     halos_.resize(sets_.size());
+    width_.resize(sets_.size());
     for (halo& h : halos_)
     {
-        h.nOwned = 0;
         h.send.resize(nProcs);
         h.recvStart.assign(nProcs, 0);
         h.recvCount.assign(nProcs, 0);
@@ -185,30 +217,11 @@ Foam::meshless::particleDistribution::particleDistribution
 
 Foam::meshless::particleDistribution::~particleDistribution()
 {
-    if (active_ == this)
-    {
-        active_ = nullptr;
-        haloHook::refresh = nullptr;
-    }
+    deactivate();
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-Foam::label Foam::meshless::particleDistribution::nOwned(const label b) const
-{
-    return attached_ ? halos_[b].nOwned : sets_[b]->size();
-}
-
-
-Foam::label Foam::meshless::particleDistribution::nHalo() const
-{
-    if (!attached_) return 0;
-    label n = 0;
-    for (label b = 0; b < label(halos_.size()); ++b) n += sets_[b]->size() - halos_[b].nOwned;
-    return n;
-}
-
 
 void Foam::meshless::particleDistribution::makeBins(const scalar binSize)
 {
@@ -334,19 +347,7 @@ Foam::label Foam::meshless::particleDistribution::migrate
     }
     const label nProcs = Pstream::nProcs();
     const label me = Pstream::myProcNo();
-    const auto t0 = std::chrono::steady_clock::now();
-    struct timer
-    {
-        std::chrono::steady_clock::time_point t0;
-        double& total;
-        ~timer()
-        {
-            total += std::chrono::duration<double>
-            (
-                std::chrono::steady_clock::now() - t0
-            ).count();
-        }
-    } clock{t0, attachments_ ? migrateSeconds_ : startSeconds_};
+    const timed clock{attachments_ ? migrateSeconds_ : startSeconds_};
 
     // Who goes where, per body
     std::vector<std::vector<std::vector<label>>> leaving(sets_.size());
@@ -452,9 +453,18 @@ Foam::label Foam::meshless::particleDistribution::migrate
 void Foam::meshless::particleDistribution::attachHalos()
 {
     if (attached_) detachHalos();
+    {
+        const timed clock{attachSeconds_};
+        appendHalos();
+    }
+    refresh();
+}
+
+
+void Foam::meshless::particleDistribution::appendHalos()
+{
     const label nProcs = Pstream::nProcs();
     const label me = Pstream::myProcNo();
-    const auto t0 = std::chrono::steady_clock::now();
 
     List<boundBox> boxes(nProcs);
     boxes[me] = ownBox();
@@ -466,14 +476,14 @@ void Foam::meshless::particleDistribution::attachHalos()
     DynamicList<label> near;
     if (boxes[me].valid())
     {
+        boundBox reach(boxes[me]);
+        reach.min() -= vector::uniform(radius_);
+        reach.max() += vector::uniform(radius_);
         for (label q = 0; q < nProcs; ++q)
         {
             if (q == me || !boxes[q].valid()) continue;
-            boundBox b(boxes[me]);
-            b.min() -= vector::uniform(radius_);
-            b.max() += vector::uniform(radius_);
             // Across a periodic direction any processor may be near
-            if (periodic_.any() || b.overlaps(boxes[q])) near.append(q);
+            if (periodic_.any() || reach.overlaps(boxes[q])) near.append(q);
         }
     }
 
@@ -482,11 +492,10 @@ void Foam::meshless::particleDistribution::attachHalos()
     {
         halo& h = halos_[b];
         particleSet& set = *sets_[b];
-        h.nOwned = set.size();
         set.markHalo();
         for (std::vector<label>& s : h.send) s.clear();
         const particleField& x = set.positions();
-        for (label i = 0; i < h.nOwned; ++i)
+        for (label i = 0; i < set.nOwned(); ++i)
         {
             const double* p = x.data() + size_t(i)*x.nComponents();
             for (const label q : near)
@@ -531,20 +540,15 @@ void Foam::meshless::particleDistribution::attachHalos()
     }
 
     ++attachments_;
-    for (label b = 0; b < label(sets_.size()); ++b)
+    for (const particleSet* set : sets_)
     {
-        haloSum_ += sets_[b]->size() - halos_[b].nOwned;
-        ownSum_ += halos_[b].nOwned;
+        haloSum_ += set->size() - set->nOwned();
+        ownSum_ += set->nOwned();
     }
 
     attached_ = true;
     active_ = this;
     haloHook::refresh = &refreshActive;
-    attachSeconds_ += std::chrono::duration<double>
-    (
-        std::chrono::steady_clock::now() - t0
-    ).count();
-    refresh();
 }
 
 
@@ -552,14 +556,15 @@ void Foam::meshless::particleDistribution::refresh()
 {
     if (!attached_) return;
     ++refreshes_;
-    const auto t0 = std::chrono::steady_clock::now();
+    const timed clock{refreshSeconds_};
     const label nProcs = Pstream::nProcs();
     const int tag = UPstream::msgType() + 1;
 
     // Values per particle, over every field of each body
-    std::vector<label> width(sets_.size(), 0);
+    std::vector<label>& width = width_;
     for (label b = 0; b < label(sets_.size()); ++b)
     {
+        width[b] = 0;
         sets_[b]->forEachField
         (
             [&](const particleField& f) { width[b] += f.nComponents(); }
@@ -628,10 +633,6 @@ void Foam::meshless::particleDistribution::refresh()
             });
         }
     }
-    refreshSeconds_ += std::chrono::duration<double>
-    (
-        std::chrono::steady_clock::now() - t0
-    ).count();
 }
 
 
@@ -654,13 +655,9 @@ void Foam::meshless::particleDistribution::runCost(dictionary& d) const
 void Foam::meshless::particleDistribution::detachHalos()
 {
     if (!attached_) return;
-    for (label b = 0; b < label(sets_.size()); ++b) sets_[b]->truncate(halos_[b].nOwned);
+    for (particleSet* set : sets_) set->truncate(set->nOwned());
     attached_ = false;
-    if (active_ == this)
-    {
-        active_ = nullptr;
-        haloHook::refresh = nullptr;
-    }
+    deactivate();
 }
 
 

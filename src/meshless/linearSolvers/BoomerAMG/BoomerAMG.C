@@ -83,6 +83,17 @@ void finaliseMpi()
 }
 
 
+//- Whether change is true on any process of comm (a decision before a
+//  collective call: every process makes it, or none)
+bool anyProcess(const bool change, MPI_Comm comm)
+{
+    if (comm == MPI_COMM_SELF) return change;
+    int any = change;
+    MPI_Allreduce(MPI_IN_PLACE, &any, 1, MPI_INT, MPI_LOR, comm);
+    return any != 0;
+}
+
+
 bool mpiFinalised()
 {
     int finalised = 0;
@@ -323,15 +334,13 @@ struct Foam::meshless::BoomerAMG::hypreObjects
     )
     {
         const label k = symmetric ? 0 : 1;
-        int change =
+        // The work vectors follow this process's rows
+        const bool change = anyProcess
+        (
             !krylov[k] || krylovSize[k] != n || krylovOffset[k] != offset
-         || krylovComm[k] != comm;
-        if (comm != MPI_COMM_SELF)
-        {
-            // The work vectors follow this process's rows: every process
-            // makes the solver again, or none
-            MPI_Allreduce(MPI_IN_PLACE, &change, 1, MPI_INT, MPI_LOR, comm);
-        }
+         || krylovComm[k] != comm,
+            comm
+        );
         if (krylov[k] && change)
         {
             method[k]->destroy(krylov[k]);
@@ -433,14 +442,16 @@ struct Foam::meshless::BoomerAMG::hypreObjects
         const label offset
     )
     {
-        int change =
-            n != vectorSize || offset != vectorOffset || comm != vectorComm;
-        if (comm != MPI_COMM_SELF)
-        {
-            // Creating hypre's vectors is collective: every process or none
-            MPI_Allreduce(MPI_IN_PLACE, &change, 1, MPI_INT, MPI_LOR, comm);
-        }
-        if (change)
+        // Creating hypre's vectors is collective
+        if
+        (
+            anyProcess
+            (
+                n != vectorSize || offset != vectorOffset
+             || comm != vectorComm,
+                comm
+            )
+        )
         {
             destroyVectors();
             vectorSize = n;
