@@ -290,6 +290,12 @@ void Foam::meshless::restartManifest::write
 
         dictionary body;
         body.add("particles", n);
+        if (Pstream::parRun())
+        {
+            // What a reconstructed case holds (reconstructPar copies the
+            // first processor's manifest)
+            body.add("particlesGlobal", returnReduce(n, sumOp<label>()));
+        }
         body.add("fields", fields);
         bodies.add(set.name(), body);
     }
@@ -421,6 +427,23 @@ void Foam::meshless::restartManifest::checkBody
 )
 {
     const fileName manifestFile(path(runTime, timeName));
+
+    // The particles of this cloud (-1: none) and, in a parallel run, of
+    // every processor's (a collective call, made for every body)
+    const fileName cloudDir(runTime.path()/timeName/lagrangianIO::cloudLocal(body));
+    label local = -1;
+    {
+        word cls;
+        label n = 0;
+        string why;
+        const fileName idFile(cloudDir/"id");
+        if (isFile(idFile) && readClassAndSize(idFile, cls, n, why)) local = n;
+    }
+    const label global =
+        Pstream::parRun()
+      ? returnReduce(Foam::max(local, label(0)), sumOp<label>())
+      : local;
+
     if (!isFile(manifestFile))
     {
         return;
@@ -453,6 +476,31 @@ void Foam::meshless::restartManifest::checkBody
     {
         // A cloud put into a written time by hand: read as seeded
         return;
+    }
+
+    // A part of the case the manifest lists whole (a processor's folder
+    // from decomposePar, which copies the manifest) or the whole of a
+    // case it lists a part of (reconstructPar copies the first
+    // processor's): this cloud's own count, and decomposePar's exact
+    // position field for the positions
+    {
+        dictionary& bodyDict = manifest.subDict("bodies").subDict(body);
+        const label listed = bodyDict.get<label>("particles");
+        const label whole =
+            bodyDict.getOrDefault<label>("particlesGlobal", listed);
+        if (local != listed && global == whole && global >= 0)
+        {
+            if (local < 0) return;
+            bodyDict.set("particles", local);
+        }
+        if
+        (
+            !isFile(cloudDir/particleSet::positionsName)
+         && isFile(cloudDir/lagrangianIO::exactPositionName)
+        )
+        {
+            bodyDict.subDict("fields").remove(particleSet::positionsName);
+        }
     }
 
     fileName file;

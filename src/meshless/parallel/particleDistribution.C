@@ -9,6 +9,7 @@
 #include "UIPstream.H"
 #include "UOPstream.H"
 #include "treeBoundBox.H"
+#include <mpi.h>
 #include <algorithm>
 #include <chrono>
 
@@ -104,7 +105,10 @@ Foam::boundBox Foam::meshless::particleDistribution::ownBox() const
     for (const particleSet* set : sets_)
     {
         const particleField& x = set->positions();
-        for (label i = 0; i < set->size(); ++i) box.add(position(x, i));
+        for (label i = 0; i < set->size(); ++i)
+        {
+            if (set->owns(i)) box.add(position(x, i));
+        }
     }
     return box;
 }
@@ -204,6 +208,25 @@ Foam::meshless::particleDistribution::particleDistribution
 
     makeBins(0.5*edge);
 
+    // Own centres: a replicated body's particle within a few cells of this
+    // part may be this processor's
+    ownCentres_ = cc;
+    ownReach_ = mesh.bounds();
+    ownReach_.min() -= vector::uniform(margin);
+    ownReach_.max() += vector::uniform(margin);
+    if (cc.size())
+    {
+        treeBoundBox own(ownCentres_);
+        own.inflate(1e-4);
+        ownTree_.reset
+        (
+            new indexedOctree<treeDataPoint>
+            (
+                treeDataPoint(ownCentres_), own, 8, 10.0, 3.0
+            )
+        );
+    }
+
     halos_.resize(sets_.size());
     width_.resize(sets_.size());
     for (halo& h : halos_)
@@ -211,6 +234,7 @@ Foam::meshless::particleDistribution::particleDistribution
         h.send.resize(nProcs);
         h.recvStart.assign(nProcs, 0);
         h.recvCount.assign(nProcs, 0);
+        h.recvIndex.resize(nProcs);
     }
 }
 
@@ -355,7 +379,7 @@ Foam::label Foam::meshless::particleDistribution::migrate
     for (label b = 0; b < label(sets_.size()); ++b)
     {
         leaving[b].resize(nProcs);
-        if (!move[b]) continue;
+        if (!move[b] || sets_[b]->replicated()) continue;
         particleSet& set = *sets_[b];
         const label n = set.size();
         const particleField& x = set.positions();
@@ -466,6 +490,7 @@ void Foam::meshless::particleDistribution::appendHalos()
     const label nProcs = Pstream::nProcs();
     const label me = Pstream::myProcNo();
 
+    locateReplicated();
     List<boundBox> boxes(nProcs);
     boxes[me] = ownBox();
     Pstream::gatherList(boxes);
@@ -492,11 +517,13 @@ void Foam::meshless::particleDistribution::appendHalos()
     {
         halo& h = halos_[b];
         particleSet& set = *sets_[b];
-        set.markHalo();
+        const bool whole = set.replicated();
+        if (!whole) set.markHalo();
         for (std::vector<label>& s : h.send) s.clear();
         const particleField& x = set.positions();
         for (label i = 0; i < set.nOwned(); ++i)
         {
+            if (whole && !set.owns(i)) continue;
             const double* p = x.data() + size_t(i)*x.nComponents();
             for (const label q : near)
             {
@@ -532,10 +559,30 @@ void Foam::meshless::particleDistribution::appendHalos()
             particleSet& set = *sets_[b];
             h.recvStart[q] = set.size();
             h.recvCount[q] = 0;
+            h.recvIndex[q].clear();
             if (!from) continue;
             labelList ids(is());
-            set.appendIds(ids.cdata(), ids.size());
             h.recvCount[q] = ids.size();
+            if (!set.replicated())
+            {
+                set.appendIds(ids.cdata(), ids.size());
+                continue;
+            }
+            // Refreshed in place: the set is in the order of its ids
+            const std::vector<label>& all = set.ids();
+            for (const label id : ids)
+            {
+                auto it = std::lower_bound(all.begin(), all.end(), id);
+                if (it == all.end() || *it != id)
+                {
+                    FatalErrorInFunction
+                        << "Body " << set.name() << ": processor " << q
+                        << " refreshes particle id " << id << ", which"
+                        << " this processor's copy does not hold in the"
+                        << " order of the ids" << abort(FatalError);
+                }
+                h.recvIndex[q].push_back(label(it - all.begin()));
+            }
         }
     }
 
@@ -624,6 +671,20 @@ void Foam::meshless::particleDistribution::refresh()
         {
             const label n = halos_[b].recvCount[q];
             if (!n) continue;
+            if (sets_[b]->replicated())
+            {
+                const std::vector<label>& idx = halos_[b].recvIndex[q];
+                sets_[b]->forEachField([&](particleField& f)
+                {
+                    const label nc = f.nComponents();
+                    double* d = f.data();
+                    for (const label i : idx)
+                    {
+                        for (label c = 0; c < nc; ++c) d[i*nc + c] = *in++;
+                    }
+                });
+                continue;
+            }
             const label i0 = halos_[b].recvStart[q];
             sets_[b]->forEachField([&](particleField& f)
             {
@@ -633,6 +694,172 @@ void Foam::meshless::particleDistribution::refresh()
             });
         }
     }
+}
+
+
+void Foam::meshless::particleDistribution::locateReplicated()
+{
+    const int me = Pstream::myProcNo();
+    for (particleSet* set : sets_)
+    {
+        if (!set->replicated()) continue;
+        const label n = set->size();
+        const particleField& x = set->positions();
+        nearest_.resize(n);
+        distanceRank* near = nearest_.data();
+        const bool any = ownTree_.valid();
+        #pragma omp parallel for schedule(static) if (n > 256)
+        for (label i = 0; i < n; ++i)
+        {
+            const point p = position(x, i);
+            near[i] = {GREAT, me};
+            if (any && ownReach_.contains(p))
+            {
+                const pointIndexHit hit = ownTree_->findNearest(p, GREAT);
+                if (hit.hit()) near[i].d = magSqr(hit.hitPoint() - p);
+            }
+        }
+        // The nearest over the processors; a tie goes to the lowest
+        MPI_Allreduce
+        (
+            MPI_IN_PLACE, near, int(n), MPI_DOUBLE_INT, MPI_MINLOC,
+            MPI_COMM_WORLD
+        );
+        std::vector<char>& own = set->ownMask();
+        own.resize(n);
+        for (label i = 0; i < n; ++i) own[i] = (near[i].rank == me);
+    }
+}
+
+
+void Foam::meshless::particleDistribution::replicate(particleSet& set)
+{
+    set.setReplicated();
+    set.ownMask().assign(set.size(), 1);
+    if (!Pstream::parRun()) return;
+    const label nProcs = Pstream::nProcs();
+    const label me = Pstream::myProcNo();
+
+    // Every processor's particles to every other
+    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+    const label n = set.size();
+    for (label q = 0; q < nProcs; ++q)
+    {
+        if (q == me) continue;
+        UOPstream os(q, pBufs);
+        os << labelList(UList<label>(set.ids().data(), n));
+        set.forEachField([&](const particleField& f)
+        {
+            os << scalarList
+            (
+                UList<scalar>
+                (
+                    const_cast<double*>(f.data()), n*f.nComponents()
+                )
+            );
+        });
+    }
+    pBufs.finishedSends();
+    for (label q = 0; q < nProcs; ++q)
+    {
+        if (q == me) continue;
+        UIPstream is(q, pBufs);
+        labelList ids(is);
+        const label n0 = set.appendIds(ids.cdata(), ids.size());
+        set.forEachField([&](particleField& f)
+        {
+            const label nc = f.nComponents();
+            scalarList d(is);
+            if (d.size() != ids.size()*nc)
+            {
+                FatalErrorInFunction
+                    << "Body " << set.name() << ", field " << f.name()
+                    << ": processor " << q << " sent " << d.size()
+                    << " values for " << ids.size() << " particles,"
+                    << " expected " << nc << " each (the processors'"
+                    << " bodies have other fields)" << abort(FatalError);
+            }
+            std::copy(d.cbegin(), d.cend(), f.data() + size_t(n0)*nc);
+        });
+    }
+
+    // In the order of the ids: the same on every processor (and the
+    // serial run's order of a set that never lost a particle)
+    const std::vector<label>& ids = set.ids();
+    std::vector<label> order(set.size());
+    for (label i = 0; i < set.size(); ++i) order[i] = i;
+    std::stable_sort
+    (
+        order.begin(), order.end(),
+        [&](const label a, const label b) { return ids[a] < ids[b]; }
+    );
+    set.reorder(order);
+    for (label i = 1; i < set.size(); ++i)
+    {
+        if (set.ids()[i] == set.ids()[i - 1])
+        {
+            FatalErrorInFunction
+                << "Body " << set.name() << ": particle id "
+                << set.ids()[i] << " is held by two processors"
+                << abort(FatalError);
+        }
+    }
+    if (set.size())
+    {
+        set.setNextId(Foam::max(set.nextId(), set.ids().back() + 1));
+    }
+    set.ownMask().assign(set.size(), 0);
+}
+
+
+void Foam::meshless::particleDistribution::share
+(
+    particleSet& set,
+    particleField& f
+)
+{
+    if (!Pstream::parRun() || !set.replicated()) return;
+    const label n = f.size();
+    const label nc = f.nComponents();
+    double* d = f.data();
+    for (label i = 0; i < n; ++i)
+    {
+        if (set.owns(i)) continue;
+        for (label c = 0; c < nc; ++c) d[i*nc + c] = 0;
+    }
+    // Each value has one owner: the sum is its value exactly
+    MPI_Allreduce
+    (
+        MPI_IN_PLACE, d, int(n*nc), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD
+    );
+}
+
+
+void Foam::meshless::particleDistribution::shareAll(particleSet& set)
+{
+    if (!Pstream::parRun() || !set.replicated()) return;
+    set.forEachField([&](particleField& f) { share(set, f); });
+}
+
+
+Foam::label Foam::meshless::particleDistribution::globalSize
+(
+    const particleSet& set
+)
+{
+    return set.replicated()
+        ? set.size()
+        : returnReduce(set.size(), sumOp<label>());
+}
+
+
+Foam::scalar Foam::meshless::particleDistribution::globalSum
+(
+    const particleSet& set,
+    const scalar local
+)
+{
+    return set.replicated() ? local : returnReduce(local, sumOp<scalar>());
 }
 
 

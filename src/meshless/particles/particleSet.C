@@ -17,6 +17,7 @@ Foam::meshless::particleSet::particleSet(const word& name, const label dim)
     id_(),
     nextId_(0),
     nOwned_(-1),
+    replicated_(false),
     fields_()
 {
     if (dim != 2 && dim != 3)

@@ -229,10 +229,27 @@ void Foam::meshless::sceneRelations::update()
 }
 
 
-void Foam::meshless::sceneRelations::rebuildEveryUpdate()
+void Foam::meshless::sceneRelations::rebuildEveryUpdate
+(
+    const std::vector<const particleSet*>& fixedOrder
+)
 {
-    for (auto& r : relations_) r->setMoving();
-    for (cells& c : cells_) c.moving = true;
+    auto fixed = [&](const particleField* f)
+    {
+        for (const particleSet* s : fixedOrder)
+        {
+            if (s->holds(f)) return true;
+        }
+        return false;
+    };
+    for (auto& r : relations_)
+    {
+        if (!fixed(&r->pointsA()) || !fixed(&r->pointsB())) r->setMoving();
+    }
+    for (cells& c : cells_)
+    {
+        if (!fixed(c.points)) c.moving = true;
+    }
 }
 
 

@@ -7,6 +7,7 @@
 #include "effect.H"
 #include "lagrangianIO.H"
 #include "restartManifest.H"
+#include "particleDistribution.H"
 #include "dictionaryChecks.H"
 #include "OSspecific.H"
 #include "PstreamCombineReduceOps.H"
@@ -341,7 +342,7 @@ void Foam::meshless::particleBody::advance
 void Foam::meshless::particleBody::describe(Ostream& os) const
 {
     os  << "    " << name_ << ": "
-        << returnReduce(set_.size(), sumOp<label>()) << " particles, spacing "
+        << particleDistribution::globalSize(set_) << " particles, spacing "
         << spacing_ << ", density " << density_ << ", model "
         << dict_.get<word>("model");
     if (kernel_.valid())

@@ -74,6 +74,23 @@ Foam::meshless::particleScene::particleScene(const polyMesh& mesh)
     }
     // Periodic directions: every relation is asked for after this
     readPeriodic();
+    // A parallel run's solids are held whole by every processor, in the
+    // order of their ids, before their models are made
+    if (Pstream::parRun())
+    {
+        for (particleBody& b : bodies_)
+        {
+            const word type = b.dict().get<word>("model");
+            if
+            (
+                bodyModel::roleTable().lookup(type, bodyModel::modelRole::wall)
+             == bodyModel::modelRole::solid
+            )
+            {
+                particleDistribution::replicate(b.particles());
+            }
+        }
+    }
     for (particleBody& b : bodies_)
     {
         b.select(costs_);
@@ -284,8 +301,12 @@ Foam::meshless::particleScene::body(const word& name)
 Foam::label Foam::meshless::particleScene::nParticles() const
 {
     label n = 0;
-    for (const particleBody& b : bodies_) n += b.particles().size();
-    return returnReduce(n, sumOp<label>());
+    label whole = 0;
+    for (const particleBody& b : bodies_)
+    {
+        (b.particles().replicated() ? whole : n) += b.particles().size();
+    }
+    return returnReduce(n, sumOp<label>()) + whole;
 }
 
 
@@ -349,7 +370,7 @@ void Foam::meshless::particleScene::startParallel(const scalar maxSpacing)
                 << exit(FatalIOError);
         }
     }
-    for (const char* key : {"coupling", "openBoundaries"})
+    for (const char* key : {"openBoundaries"})
     {
         if (dict_.found(key))
         {
@@ -378,6 +399,19 @@ void Foam::meshless::particleScene::startParallel(const scalar maxSpacing)
     );
     distribution_->setPeriodic(relations_.periodic());
     attachHalos(true);
+
+    for (const particleBody& b : bodies_)
+    {
+        const particleSet& set = b.particles();
+        if (!set.replicated()) continue;
+        labelList owned(Pstream::nProcs(), 0);
+        for (label i = 0; i < set.size(); ++i) owned[Pstream::myProcNo()] += set.owns(i);
+        Pstream::gatherList(owned);
+        Pstream::scatterList(owned);
+        Info<< "    " << b.name() << ": held whole by every processor,"
+            << " owned " << owned << " (the nearest cell's processor)"
+            << endl;
+    }
 }
 
 
@@ -402,15 +436,25 @@ void Foam::meshless::particleScene::attachHalos(const bool everyBody)
         std::vector<bool> move;
         for (particleBody& b : bodies_)
         {
-            move.push_back(everyBody || b.model().moves());
+            move.push_back
+            (
+                !b.particles().replicated()
+             && (everyBody || b.model().moves())
+            );
         }
         distribution_->migrate(move);
     }
     distribution_->attachHalos();
     for (particleBody& b : bodies_) b.model().resized();
 
-    // Every relation over the new particle order, and wide enough
-    relations_.rebuildEveryUpdate();
+    // Every relation over the new particle order, and wide enough (a
+    // relation within the replicated bodies keeps its order)
+    std::vector<const particleSet*> whole;
+    for (const particleBody& b : bodies_)
+    {
+        if (b.particles().replicated()) whole.push_back(&b.particles());
+    }
+    relations_.rebuildEveryUpdate(whole);
     if (relations_.maxRadius() > distribution_->radius())
     {
         FatalErrorInFunction
@@ -525,19 +569,41 @@ void Foam::meshless::particleScene::writeState()
         locator_.reset(new lagrangianIO::meshLocator(mesh_));
     }
     UPtrList<const particleSet> sets(bodies_.size());
+    // A replicated body (a parallel run's solid) is written whole, with
+    // its owners' values, by the master; the other processors write it
+    // empty (decomposePar, reconstructPar and a restart see one copy)
+    std::vector<std::unique_ptr<particleSet>> empty;
     forAll(bodies_, i)
     {
-        const particleBody& b = bodies_[i];
+        particleBody& b = bodies_[i];
+        const particleSet* set = &b.particles();
+        if (set->replicated())
+        {
+            particleDistribution::shareAll(b.particles());
+            if (!Pstream::master())
+            {
+                empty.emplace_back(new particleSet(set->name(), dim_));
+                particleSet& e = *empty.back();
+                b.particles().forEachField([&](const particleField& f)
+                {
+                    if (f.written()) e.addField(f.name(), f.fieldKind());
+                });
+                set = &e;
+            }
+        }
         lagrangianIO::write
         (
-            b.particles(),
+            *set,
             runTime,
             runTime.timeName(),
             zPlane_,
-            locator_->locate(b.particles(), zPlane_)
+            locator_->locate(*set, zPlane_)
         );
-        b.model().write(runTime, runTime.timeName());
-        sets.set(i, &b.particles());
+        if (set == &b.particles())
+        {
+            b.model().write(runTime, runTime.timeName());
+        }
+        sets.set(i, set);
     }
     monitor::writeStates(monitors_, runTime, runTime.timeName());
     if (coupling_.valid()) coupling_->writeState(runTime.timeName());
@@ -636,7 +702,7 @@ void Foam::meshless::particleScene::runCost(dictionary& d) const
         e.add
         (
             "particles",
-            returnReduce(b.particles().size(), sumOp<label>())
+            particleDistribution::globalSize(b.particles())
         );
         e.add("spacing", b.spacing());
         if (b.hasKernel()) e.add("smoothingLength", b.kernel().h());

@@ -189,6 +189,7 @@ Foam::meshless::ghostBoundary::ownFields() const
     {
         if (q) f.push_back(q);
     }
+    f.insert(f.end(), fluidFields_.begin(), fluidFields_.end());
     return f;
 }
 

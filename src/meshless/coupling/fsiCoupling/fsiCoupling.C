@@ -111,6 +111,33 @@ void Foam::meshless::fsiCoupling::writeForces
     const UList<const ghostBoundary*>& ghosts
 )
 {
+    // The work of the step on each solid (every processor holds every
+    // solid whole) and the fluid's sums over every processor's particles
+    forAll(solids, k)
+    {
+        const particleField& x = solids[k]->particles().positions();
+        const particleField& f = solids[k]->model().solid()->externalForce();
+        const size_t m = size_t(x.size())*x.nComponents();
+        std::vector<double>& x0 = workPositions_[k];
+        if (x0.size() == m)
+        {
+            scalar w = 0;
+            for (size_t c = 0; c < m; ++c)
+            {
+                w += f.data()[c]*(x.data()[c] - x0[c]);
+            }
+            work_[k] += w;
+        }
+        x0.assign(x.data(), x.data() + m);
+    }
+    List<vector> onFluid(solids.size());
+    forAll(solids, k)
+    {
+        onFluid[k] =
+            returnReduce(fluid.forceOnFluid(*ghosts[k]), sumOp<vector>());
+    }
+    if (!Pstream::master()) return;
+
     if (!forces_.valid())
     {
         const Time& runTime = scene_.time();
@@ -141,27 +168,12 @@ void Foam::meshless::fsiCoupling::writeForces
     forAll(solids, k)
     {
         const vector onSolid = total(solids[k]->model().solid()->externalForce());
-        const vector onFluid = fluid.forceOnFluid(*ghosts[k]);
         for (direction d = 0; d < 3; ++d) os << tab << onSolid[d];
-        for (direction d = 0; d < 3; ++d) os << tab << onFluid[d];
+        for (direction d = 0; d < 3; ++d) os << tab << onFluid[k][d];
     }
     os  << tab << nSub;
     forAll(solids, k)
     {
-        const particleField& x = solids[k]->particles().positions();
-        const particleField& f = solids[k]->model().solid()->externalForce();
-        const size_t m = size_t(x.size())*x.nComponents();
-        std::vector<double>& x0 = workPositions_[k];
-        if (x0.size() == m)
-        {
-            scalar w = 0;
-            for (size_t c = 0; c < m; ++c)
-            {
-                w += f.data()[c]*(x.data()[c] - x0[c]);
-            }
-            work_[k] += w;
-        }
-        x0.assign(x.data(), x.data() + m);
         os  << tab << work_[k];
     }
     os  << endl;

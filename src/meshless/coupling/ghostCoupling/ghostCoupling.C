@@ -6,6 +6,7 @@
 #include "solidModel.H"
 #include "particleScene.H"
 #include "fluidModel.H"
+#include "particleDistribution.H"
 
 Foam::meshless::ghostCoupling::ghostCoupling
 (
@@ -33,6 +34,17 @@ Foam::meshless::deformingGhost& Foam::meshless::ghostCoupling::addGhosts
     fluid_->addBoundary(g);
     boundaries_.append(&g);
     return g;
+}
+
+
+const double* Foam::meshless::ghostCoupling::reaction(const label k)
+{
+    deformingGhost& g = *ghosts_[k];
+    particleDistribution::share
+    (
+        solidBodies_[k]->particles(), *g.reactionField()
+    );
+    return g.reaction();
 }
 
 

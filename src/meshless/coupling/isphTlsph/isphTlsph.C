@@ -124,14 +124,14 @@ void Foam::meshless::couplings::isphTlsph::evaluate
 void Foam::meshless::couplings::isphTlsph::gatherReactions
 (
     std::vector<double>& x
-) const
+)
 {
     size_t offset = 0;
     forAll(solidBodies_, k)
     {
         const label m =
             solidBodies_[k]->particles().size()*solidBodies_[k]->dim();
-        const double* R = ghosts_[k]->reaction();
+        const double* R = reaction(k);
         std::copy(R, R + m, x.begin() + offset);
         offset += m;
     }

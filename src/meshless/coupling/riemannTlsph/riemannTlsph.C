@@ -116,7 +116,7 @@ void Foam::meshless::couplings::riemannTlsph::acousticStep
     forAll(solidBodies_, k)
     {
         particleField& fExt = solidBodies_[k]->model().solid()->externalForce();
-        const double* R = ghosts_[k]->reaction();
+        const double* R = reaction(k);
         std::copy(R, R + fExt.size()*fExt.nComponents(), fExt.data());
         const particleSet& set = solidBodies_[k]->particles();
         const double* x = set.positions().data();

@@ -118,7 +118,7 @@ void Foam::meshless::couplings::ulphPd::advance
     forAll(solidBodies_, k)
     {
         particleField& fExt = solidBodies_[k]->model().solid()->externalForce();
-        const double* R = ghosts_[k]->reaction();
+        const double* R = reaction(k);
         std::copy(R, R + fExt.size()*fExt.nComponents(), fExt.data());
     }
     const label nSub = solidSteps(solidBodies_, dt, subSteps_);

@@ -232,6 +232,7 @@ Foam::meshless::bodyModels::isph::isph
     last_(),
     failure_(),
     solvedOnce_(false),
+    solvedOnceSaved_(false),
     assemblyCost_(-1),
     solveCost_(-1),
     projectionCost_(-1)
@@ -326,10 +327,17 @@ void Foam::meshless::bodyModels::isph::boundaryAdded(boundary& b)
         particleSet& gs = b.ghosts->ghostBody().particles();
         if (!gs.found("pressureRow"))
         {
-            gs.addScratchField("pressureRow", particleField::kind::scalar);
             // The last solve's wall pressures, carried by the particles
-            // (a processor's unknowns change with its halo)
-            gs.addScratchField("pSolved", particleField::kind::scalar);
+            // (a processor's unknowns change with its halo); the fluid's,
+            // not a coupled solid's state
+            b.ghosts->addFluidField
+            (
+                gs.addScratchField("pressureRow", particleField::kind::scalar)
+            );
+            b.ghosts->addFluidField
+            (
+                gs.addScratchField("pSolved", particleField::kind::scalar)
+            );
         }
     }
     b.toGhosts->cache(neighbourRelation::kernelGradient);
@@ -944,9 +952,13 @@ void Foam::meshless::bodyModels::isph::solveDistributed
     {
         for (size_t k = 0; k < boundaries_.size(); ++k)
         {
-            const label nW =
-                boundaries_[k].ghosts->ghostBody().particles().nOwned();
-            for (label j = 0; j < nW; ++j) ownRow_[wallOffset_[k] + j] = M++;
+            // (a replicated body's, a solid's: those this processor owns)
+            const particleSet& gs =
+                boundaries_[k].ghosts->ghostBody().particles();
+            for (label j = 0; j < gs.size(); ++j)
+            {
+                if (gs.owns(j)) ownRow_[wallOffset_[k] + j] = M++;
+            }
         }
     }
     const globalIndex rows(M);
@@ -961,9 +973,12 @@ void Foam::meshless::bodyModels::isph::solveDistributed
         {
             particleSet& gs = boundaries_[k].ghosts->ghostBody().particles();
             particleField& rowW = gs.field("pressureRow");
-            for (label j = 0; j < gs.nOwned(); ++j)
+            for (label j = 0; j < gs.size(); ++j)
             {
-                rowW(j, 0) = offset + ownRow_[wallOffset_[k] + j];
+                if (gs.owns(j))
+                {
+                    rowW(j, 0) = offset + ownRow_[wallOffset_[k] + j];
+                }
             }
         }
     }
@@ -1036,6 +1051,43 @@ void Foam::meshless::bodyModels::isph::solveDistributed
 }
 
 
+void Foam::meshless::bodyModels::isph::stateSaved()
+{
+    pAllSaved_ = pAll_;
+    solvedOnceSaved_ = solvedOnce_;
+    pSolvedSaved_.resize(boundaries_.size());
+    for (size_t k = 0; k < boundaries_.size(); ++k)
+    {
+        const particleSet& gs = boundaries_[k].ghosts->ghostBody().particles();
+        if (!gs.found("pSolved")) continue;
+        const particleField& ps = gs.field("pSolved");
+        pSolvedSaved_[k].assign(ps.data(), ps.data() + ps.size());
+    }
+}
+
+
+void Foam::meshless::bodyModels::isph::restored()
+{
+    fluidModel::restored();
+    pAll_ = pAllSaved_;
+    solvedOnce_ = solvedOnceSaved_;
+    for (size_t k = 0; k < boundaries_.size(); ++k)
+    {
+        particleSet& gs = boundaries_[k].ghosts->ghostBody().particles();
+        if (!gs.found("pSolved")) continue;
+        particleField& ps = gs.field("pSolved");
+        const std::vector<double>& saved = pSolvedSaved_[k];
+        if (label(saved.size()) != ps.size())
+        {
+            FatalErrorInFunction
+                << "Boundary " << gs.name() << " changed since the state was"
+                << " saved" << abort(FatalError);
+        }
+        std::copy(saved.begin(), saved.end(), ps.data());
+    }
+}
+
+
 void Foam::meshless::bodyModels::isph::refreshUnknowns()
 {
     refreshHalos();
@@ -1085,7 +1137,10 @@ void Foam::meshless::bodyModels::isph::interfaceForces()
                 &S, p_.data(), V_.data(), g, rho0_, interfaceForce_.data()
             }
         );
-        const vectorD<Dim> F = sumInOrder<Dim>(interfaceForce_.data(), n);
+        const vectorD<Dim> F = sumInOrder<Dim>
+        (
+            interfaceForce_.data(), body_.particles().nOwned()
+        );
         b.forceOnFluid = Zero;
         for (label d = 0; d < Dim; ++d) b.forceOnFluid[d] = F[d];
     }

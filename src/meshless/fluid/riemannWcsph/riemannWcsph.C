@@ -293,7 +293,8 @@ void Foam::meshless::bodyModels::riemannWcsph::dissipationReactions
 template<int Dim>
 Foam::vector Foam::meshless::bodyModels::riemannWcsph::boundaryForce() const
 {
-    const label n = U_.size();
+    // Over the own particles (a parallel run's halo is another's)
+    const label n = body_.particles().nOwned();
     const double* m = mass_.data();
     vectorD<Dim> f = vectorD<Dim>::Zero();
     for (label i = 0; i < n; ++i) f += m[i]*cvec<Dim>(aBoundary_.data(), i);
@@ -318,10 +319,12 @@ void Foam::meshless::bodyModels::riemannWcsph::viscousReactions()
         for (size_t k = 0; k < boundaries_.size(); ++k)
         {
             if (!boundaries_[k].ghosts->reaction()) continue;
-            const particleField& Rd = boundaries_[k].ghosts->ghostBody()
-                .particles().field("fluidDissipativeForce");
+            const particleSet& ws =
+                boundaries_[k].ghosts->ghostBody().particles();
+            const particleField& Rd = ws.field("fluidDissipativeForce");
             for (label i = 0; i < Rd.size(); ++i)
             {
+                if (!ws.owns(i)) continue;
                 for (label d = 0; d < Rd.nComponents(); ++d)
                 {
                     dissipativeOnFluid_[k][d] -= Rd(i, d);
@@ -355,7 +358,7 @@ void Foam::meshless::bodyModels::riemannWcsph::viscousReactions()
         const double* r = b.toGhosts->r();
         const double* dw = b.toGhosts->dw();
         vectorD<Dim> F = vectorD<Dim>::Zero();
-        for (label i = 0; i < n; ++i)
+        for (label i = 0; i < body_.particles().nOwned(); ++i)
         {
             for (label q = off[i]; q < off[i + 1]; ++q)
             {

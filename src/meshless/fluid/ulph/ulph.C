@@ -137,7 +137,10 @@ void Foam::meshless::bodyModels::ulph::ghostForces()
             n, V_.data(), S_.data(), ctx_.sources[k + 1], Ssrc_[k + 1],
             ghostForce_.data()
         );
-        const vectorD<Dim> f = sumInOrder<Dim>(ghostForce_.data(), n);
+        const vectorD<Dim> f = sumInOrder<Dim>
+        (
+            ghostForce_.data(), body_.particles().nOwned()
+        );
         b.forceOnFluid = Zero;
         for (int d = 0; d < Dim; ++d) b.forceOnFluid[d] = f(d);
         ulphEquations::reactionOnGhosts<Dim>

@@ -8,6 +8,7 @@
 #include "gravity.H"
 #include "restartManifest.H"
 #include "ghostWall.H"
+#include "particleDistribution.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -142,7 +143,7 @@ Foam::scalar Foam::meshless::monitors::energy::potential
             E -= m(i, 0)*g->value()[c]*x(i, c);
         }
     }
-    return returnReduce(E, sumOp<scalar>());
+    return particleDistribution::globalSum(set, E);
 }
 
 
@@ -207,7 +208,7 @@ void Foam::meshless::monitors::energy::writeValues(Ostream& os)
         }
         const effects::gravity* grav = findEffect<effects::gravity>(b);
 
-        scalar kinetic = 0;
+        scalar kinetic = 0, bodyPower = 0;
         if (hasU || frame_)
         {
             const particleField* U = hasU ? &set.field("U") : nullptr;
@@ -228,19 +229,19 @@ void Foam::meshless::monitors::energy::writeValues(Ostream& os)
                     }
                 }
                 kinetic += 0.5*m(i, 0)*u2;
-                power += m(i, 0)*p;
+                bodyPower += m(i, 0)*p;
             }
         }
-        reduce(kinetic, sumOp<scalar>());
+        kinetic = particleDistribution::globalSum(set, kinetic);
+        power += particleDistribution::globalSum(set, bodyPower);
         const scalar strain =
-            returnReduce(b.model().strainEnergy(), sumOp<scalar>());
+            particleDistribution::globalSum(set, b.model().strainEnergy());
         const scalar pot = potential(b) - potential0_[k];
         os << tab << kinetic << tab << strain << tab << pot;
         total += kinetic + strain + pot;
     }
     if (frame_)
     {
-        reduce(power, sumOp<scalar>());
         if (frameTime_ > -GREAT && t > frameTime_)
         {
             frameWork_ += 0.5*(framePower_ + power)*(t - frameTime_);

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "probes.H"
+#include "particleDistribution.H"
 #include "particleScene.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -90,8 +91,8 @@ Foam::scalar Foam::meshless::monitors::probes::value(const label k) const
         sumW += w;
     }
     // Over every processor's particles
-    reduce(sumWf, sumOp<scalar>());
-    reduce(sumW, sumOp<scalar>());
+    sumWf = particleDistribution::globalSum(set, sumWf);
+    sumW = particleDistribution::globalSum(set, sumW);
     return sumW > 0 ? sumWf/sumW : 0;
 }
 

@@ -183,107 +183,120 @@ Foam::label Foam::meshless::peridynamicFamilies::readBroken
 {
     const fileName dir(runTime.path()/timeName/lagrangianIO::cloudLocal(set.name()));
     const fileName path(dir/brokenBondsName);
-    if (!isFile(path) && !isFile(path + ".gz")) return 0;
-
-    IFstream is(path);
-    IOobject io
-    (
-        brokenBondsName,
-        timeName,
-        lagrangianIO::cloudLocal(set.name()),
-        runTime
-    );
-    if (!io.readHeader(is))
-    {
-        FatalIOErrorInFunction(is)
-            << "Cannot read the header of " << path << exit(FatalIOError);
-    }
-
-    // (id, id) pairs: per particle of the file, its broken partners (the
-    // file's particles are its cloud's, in the order of the cloud's ids);
-    // the pairs of labelPairList files of earlier versions as they are
     List<labelPair> pairs;
-    const word& cls = io.headerClassName();
-    if
-    (
-        cls == labelFieldIOField::typeName
-     || cls == labelFieldCompactIOField::typeName
-    )
+    if (isFile(path) || isFile(path + ".gz"))
     {
-        // OpenFOAM's utilities write the compact form (offsets and values)
-        // in binary
-        List<labelField> partners;
-        if (cls == labelFieldIOField::typeName)
+        IFstream is(path);
+        IOobject io
+        (
+            brokenBondsName,
+            timeName,
+            lagrangianIO::cloudLocal(set.name()),
+            runTime
+        );
+        if (!io.readHeader(is))
         {
-            is >> partners;
+            FatalIOErrorInFunction(is)
+                << "Cannot read the header of " << path << exit(FatalIOError);
+        }
+
+        // (id, id) pairs: per particle of the file, its broken partners (the
+        // file's particles are its cloud's, in the order of the cloud's ids);
+        // the pairs of labelPairList files of earlier versions as they are
+        const word& cls = io.headerClassName();
+        if
+        (
+            cls == labelFieldIOField::typeName
+         || cls == labelFieldCompactIOField::typeName
+        )
+        {
+            // OpenFOAM's utilities write the compact form (offsets and values)
+            // in binary
+            List<labelField> partners;
+            if (cls == labelFieldIOField::typeName)
+            {
+                is >> partners;
+            }
+            else
+            {
+                const labelList offsets(is);
+                const labelList values(is);
+                bool ok = !offsets.empty() && offsets.first() == 0
+                    && offsets.last() == values.size();
+                for (label k = 1; ok && k < offsets.size(); ++k)
+                {
+                    ok = offsets[k] >= offsets[k - 1];
+                }
+                if (!ok)
+                {
+                    FatalIOErrorInFunction(is)
+                        << path << ": the offsets of its compact lists do not"
+                        << " run from 0 up to its " << values.size()
+                        << " values: expected " << cls << " as OpenFOAM writes"
+                        << " it" << exit(FatalIOError);
+                }
+                partners.setSize(offsets.size() - 1);
+                forAll(partners, k)
+                {
+                    partners[k] = SubList<label>
+                    (
+                        values, offsets[k + 1] - offsets[k], offsets[k]
+                    );
+                }
+            }
+            const IOField<label> fileIds
+            (
+                IOobject
+                (
+                    "id",
+                    timeName,
+                    lagrangianIO::cloudLocal(set.name()),
+                    runTime,
+                    IOobject::MUST_READ,
+                    IOobject::NO_WRITE,
+                    false
+                )
+            );
+            if (fileIds.size() != partners.size())
+            {
+                FatalIOErrorInFunction(is)
+                    << path << " has " << partners.size() << " entries, the"
+                    << " cloud's id field " << fileIds.size() << ": expected an"
+                    << " entry per particle of the cloud" << exit(FatalIOError);
+            }
+            DynamicList<labelPair> found;
+            forAll(partners, k)
+            {
+                for (const label j : partners[k])
+                {
+                    found.append(labelPair(fileIds[k], j));
+                }
+            }
+            pairs.transfer(found);
+        }
+        else if (io.headerClassName() == "labelPairList")
+        {
+            is >> pairs;
         }
         else
         {
-            const labelList offsets(is);
-            const labelList values(is);
-            bool ok = !offsets.empty() && offsets.first() == 0
-                && offsets.last() == values.size();
-            for (label k = 1; ok && k < offsets.size(); ++k)
-            {
-                ok = offsets[k] >= offsets[k - 1];
-            }
-            if (!ok)
-            {
-                FatalIOErrorInFunction(is)
-                    << path << ": the offsets of its compact lists do not"
-                    << " run from 0 up to its " << values.size()
-                    << " values: expected " << cls << " as OpenFOAM writes"
-                    << " it" << exit(FatalIOError);
-            }
-            partners.setSize(offsets.size() - 1);
-            forAll(partners, k)
-            {
-                partners[k] = SubList<label>
-                (
-                    values, offsets[k + 1] - offsets[k], offsets[k]
-                );
-            }
-        }
-        const IOField<label> fileIds
-        (
-            IOobject
-            (
-                "id",
-                timeName,
-                lagrangianIO::cloudLocal(set.name()),
-                runTime,
-                IOobject::MUST_READ,
-                IOobject::NO_WRITE,
-                false
-            )
-        );
-        if (fileIds.size() != partners.size())
-        {
             FatalIOErrorInFunction(is)
-                << path << " has " << partners.size() << " entries, the"
-                << " cloud's id field " << fileIds.size() << ": expected an"
-                << " entry per particle of the cloud" << exit(FatalIOError);
+                << path << " is of class " << io.headerClassName() << ": expected "
+                << labelFieldIOField::typeName << " (per particle the ids of its"
+                << " broken partners)" << exit(FatalIOError);
         }
-        DynamicList<labelPair> found;
-        forAll(partners, k)
-        {
-            for (const label j : partners[k])
-            {
-                found.append(labelPair(fileIds[k], j));
-            }
-        }
-        pairs.transfer(found);
     }
-    else if (io.headerClassName() == "labelPairList")
+    if (Pstream::parRun() && set.replicated())
     {
-        is >> pairs;
-    }
-    else
-    {
-        FatalIOErrorInFunction(is)
-            << path << " is of class " << io.headerClassName() << ": expected "
-            << labelFieldIOField::typeName << " (per particle the ids of its"
-            << " broken partners)" << exit(FatalIOError);
+        // The solid is whole on every processor: every processor's pairs
+        // (a decomposed case's files each hold those of its particles)
+        List<List<labelPair>> all(Pstream::nProcs());
+        all[Pstream::myProcNo()] = pairs;
+        Pstream::gatherList(all);
+        Pstream::scatterList(all);
+        DynamicList<labelPair> every;
+        for (const List<labelPair>& l : all) every.append(l);
+        pairs.transfer(every);
     }
 
     std::unordered_map<label, label> index;
@@ -310,11 +323,11 @@ Foam::label Foam::meshless::peridynamicFamilies::readBroken
         }
         if (!found)
         {
-            FatalIOErrorInFunction(is)
+            FatalErrorInFunction
                 << path << ": broken bond " << p << " is not a bond of body "
                 << set.name() << " (no such particle ids, or farther apart"
                 << " than the horizon in the reference configuration)"
-                << exit(FatalIOError);
+                << exit(FatalError);
         }
         // Each pair once: the new files list it from both particles
         if (p.first() < p.second()) ++nPairs;

@@ -195,6 +195,15 @@ void Foam::meshless::solidModel::connect(particleScene& scene)
     // wall (half the wall's spacing behind the face and along it) from a
     // particle a spacing off the face, and the step's motion (a half)
     contactWalls_.clear();
+    if (Pstream::parRun() && dict_.found("walls"))
+    {
+        // Every processor steps the whole solid, but holds the walls near
+        // its own part only
+        FatalIOErrorInFunction(dict_)
+            << "Solid " << body_.name() << ": 'walls' (contact with walls)"
+            << " does not run in parallel yet: run the case serially"
+            << exit(FatalIOError);
+    }
     for (const word& name : dict_.getOrDefault<wordList>("walls", wordList()))
     {
         particleBody& wb = scene.body(name, dict_);
