@@ -49,9 +49,9 @@ then in or out of its relation).
   - riemannSphFoam, the elastic gate coupled by riemannTlsph at 2.5 mm
     (gate 128 particles, owned 44/42/42 by 3 processors, hierarchical
     1 3 1) to 0.02 s, with the gate's explicit (verlet) and implicit
-    integrators: every field to RTOL but the rates (accelerations,
-    density rates) to RATES_RTOL: a stiff solid's accelerations are its
-    positions' last bits times c^2/h^2 (5e9 here), so positions equal to
+    integrators: every field to RTOL but the rates (RATES: accelerations,
+    density rates, dissipative forces) to RATES_RTOL: a stiff solid's
+    accelerations are its positions' last bits times c^2/h^2 (5e9 here), so positions equal to
     an ulp give accelerations equal to about 2e-8. A parallel restart of
     the coupled case (verlet, at 0.01 s) ends bit for bit on the
     uninterrupted parallel run. (The implicit integrator makes its
@@ -62,6 +62,12 @@ then in or out of its relation).
     0.01 s): the water to RTOL (1e-11), the obstacle bit for bit; a
     parallel restart at 0.005 s (the master writes the broken bonds, every
     processor reads them) ends bit for bit on the uninterrupted run.
+  - riemannSphFoam, the Turek-Hron channel at 2 cm (inflow buffer and
+    outflow, riemannTlsph flag) to 1 s, hierarchical (3 1 1): 159
+    particles emitted, 40 leave; the copies' ids follow their sources'
+    ids over every processor, so the same particles carry the same ids as
+    serially; fields to RTOL (rates and dissipative forces to
+    RATES_RTOL), the open boundaries' counts (reduced) equal.
   - isphTlsphFoam, the oscillating plate alone (TLSPH, 1050 particles,
     2 processors): bit for bit (every processor steps the whole solid).
   - isphTlsphFoam, the hydrostatic plate (isphTlsph coupling, the plate's
@@ -94,7 +100,8 @@ from foamCloud import read_cloud  # noqa: E402
 RTOL = 1e-10
 ISPH_RTOL = 1e-8
 RATES_RTOL = 1e-7
-RATES = ("acceleration", "averageAcceleration", "densityRate")
+RATES = ("acceleration", "averageAcceleration", "densityRate",
+         "dissipativeAcceleration", "fluidDissipativeForce")
 MONITOR_RTOL = 1e-9
 HEADER = "FoamFile { version 2.0; format ascii; class dictionary;" \
     " object %s; }\n"
@@ -441,6 +448,21 @@ def pd_obstacle(t, work):
             kill=False)
 
 
+def open_channel(t, work):
+    cases = serial_and_parallel(
+        t, work, "openChannel", "tutorials/riemannSphFoam/turekHronFSI2",
+        "riemannSphFoam", 0.02, ("0.5", "1"), "hierarchical", 3,
+        "coeffs { n (3 1 1); order xyz; }")
+    if not cases:
+        return
+    same_clouds(t, "openChannel", cases[0], cases[1], ("water", "flag"),
+                ("0.5", "1"), RTOL, RATES_RTOL)
+    flux = [monitor_rows(c, "openBoundaries")[-1] for c in cases]
+    t.check("openChannel: the particles in and out (inflow, outflow) as"
+            " serially: %s, %s" % (flux[0][1:], flux[1][1:]),
+            flux[0] == flux[1] and flux[0][2] > 0)
+
+
 def tlsph_plate(t, work):
     cases = serial_and_parallel(
         t, work, "tlsphPlate", "tutorials/isphTlsphFoam/oscillatingPlate",
@@ -508,4 +530,5 @@ if __name__ == "__main__":
         sys.exit(1)
     sys.exit(run_parts("parallelRuns", dam_break, ulph_dam_break,
                        isph_dam_break, taylor_green, riemann_gate,
-                       pd_obstacle, tlsph_plate, isph_plate, linear_solve, free_fall))
+                       pd_obstacle, open_channel, tlsph_plate, isph_plate,
+                       linear_solve, free_fall))

@@ -370,14 +370,6 @@ void Foam::meshless::particleScene::startParallel(const scalar maxSpacing)
                 << exit(FatalIOError);
         }
     }
-    for (const char* key : {"openBoundaries"})
-    {
-        if (dict_.found(key))
-        {
-            FatalIOErrorInFunction(dict_)
-                << "'" << key << "'" << notYet << exit(FatalIOError);
-        }
-    }
 
     // The halo: the widest search of any relation (a kernel's support
     // grown by its model's skin), checked once the models have asked

@@ -6,6 +6,8 @@
 #include "particleScene.H"
 #include "fluidModel.H"
 #include "particleExpression.H"
+#include "ListListOps.H"
+#include <algorithm>
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -94,7 +96,9 @@ void Foam::meshless::openBoundaries::inflow::select(const scalar t)
     }
     const label nb = buffer_.size();
     target_.resize(nb);
-    if (!nb) return;
+    // (OpenFOAM's expressions reduce over the processors: every processor
+    // evaluates, with no point if need be)
+    if (!nb && !Pstream::parRun()) return;
 
     const particleField& x = body_.particles().positions();
     X_.resize(nb);
@@ -128,19 +132,54 @@ void Foam::meshless::openBoundaries::inflow::constrain
 
 Foam::label Foam::meshless::openBoundaries::inflow::emit(const scalar)
 {
+    particleSet& set = body_.particles();
     crossed_.clear();
     for (const label i : buffer_)
     {
-        if (distance(i) >= 0) crossed_.push_back(i);
+        // (a parallel run's halo, selected with the step's particles, is
+        // gone: its own processor emits it)
+        if (i < set.size() && distance(i) >= 0) crossed_.push_back(i);
     }
     buffer_.clear();
     const label nc = crossed_.size();
-    if (!nc) return 0;
+
+    // The copies' ids: from the largest next id of any processor, in the
+    // order of their sources' ids over every processor's (unique, and the
+    // same for any decomposition)
+    labelList sources(nc);
+    forAll(sources, k) sources[k] = set.ids()[crossed_[k]];
+    label base = set.nextId();
+    labelList every(sources);
+    if (Pstream::parRun())
+    {
+        base = returnReduce(base, maxOp<label>());
+        List<labelList> all(Pstream::nProcs());
+        all[Pstream::myProcNo()] = sources;
+        Pstream::gatherList(all);
+        Pstream::scatterList(all);
+        every = ListListOps::combine<labelList>(all, accessOp<labelList>());
+    }
+    Foam::sort(every);
+    const label next = base + every.size();
+    if (!nc)
+    {
+        if (next != set.nextId()) set.setNextId(next);
+        return 0;
+    }
 
     // The crossed particles go on as fluid, their copies (buffer
     // particles) a buffer length upstream
-    particleSet& set = body_.particles();
     const label first = set.appendCopies(crossed_);
+    forAll(sources, k)
+    {
+        const label rank = label
+        (
+            std::lower_bound(every.begin(), every.end(), sources[k])
+          - every.begin()
+        );
+        set.ids()[first + k] = base + rank;
+    }
+    if (next != set.nextId()) set.setNextId(next);
     for (const label i : crossed_) inBuffer_(i, 0) = 0;
     particleField& x = set.positions();
     const particleField& m = set.field("mass");

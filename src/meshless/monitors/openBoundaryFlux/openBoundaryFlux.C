@@ -81,13 +81,19 @@ Foam::wordList Foam::meshless::monitors::openBoundaryFlux::columns() const
 
 void Foam::meshless::monitors::openBoundaryFlux::writeValues(Ostream& os)
 {
+    // Over every processor's particles and counts (each counts its own)
     for (const label k : bodyOf_)
     {
-        os << tab << boundaries_[k].body().particles().size();
+        os  << tab
+            << returnReduce
+               (
+                   boundaries_[k].body().particles().size(), sumOp<label>()
+               );
     }
     for (const openBoundary& ob : boundaries_)
     {
-        os << tab << ob.particles() << tab << ob.mass();
+        os  << tab << returnReduce(ob.particles(), sumOp<label>())
+            << tab << returnReduce(ob.mass(), sumOp<scalar>());
     }
 }
 
