@@ -29,9 +29,7 @@ step apart in the two runs and the water's velocities differ by 1e-3).
 The decomposed case (simple) continues from 0.01 s in parallel (2
 processors, each starting from its own files of the obstacle's broken
 bonds, which they share: the solid is whole on every processor) and ends
-within RESTART_RTOL of the serial continuation. With a solid's contact
-with walls ulphPdFoam -parallel stops and says it does not run in
-parallel yet.
+within RESTART_RTOL of the serial continuation.
 """
 import math
 import os
@@ -329,16 +327,6 @@ def parallel_continuation(t, serial, case, serial_read):
                    ", ".join("%s %.1e" % kv for kv in worst.items())),
                 all(v <= RESTART_RTOL and math.isfinite(v)
                     for v in worst.values()))
-
-    # What does not run in parallel yet is refused by name: a solid's
-    # contact with walls
-    set_entry(case, "constant/particleProperties", "bodies/obstacle/walls",
-              "(tank)")
-    set_entry(case, "system/controlDict", "endTime", 1)
-    code, out = mpirun(case)
-    t.check("%s -parallel with a solid's wall contact stops, saying it does"
-            " not run in parallel yet" % SOLVER,
-            code != 0 and "does not run in parallel yet" in out, out[-800:])
 
 
 def decomposition_test(t, work):

@@ -818,10 +818,19 @@ void Foam::meshless::particleDistribution::share
     particleField& f
 )
 {
+    share(set, f.data(), f.nComponents());
+}
+
+
+void Foam::meshless::particleDistribution::share
+(
+    const particleSet& set,
+    double* d,
+    const label nc
+)
+{
     if (!Pstream::parRun() || !set.replicated()) return;
-    const label n = f.size();
-    const label nc = f.nComponents();
-    double* d = f.data();
+    const label n = set.size();
     for (label i = 0; i < n; ++i)
     {
         if (set.owns(i)) continue;

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "solidModel.H"
+#include "particleDistribution.H"
 #include "solidWallContact.H"
 #include "ghostBoundary.H"
 #include "dispatchDim.H"
@@ -195,15 +196,6 @@ void Foam::meshless::solidModel::connect(particleScene& scene)
     // wall (half the wall's spacing behind the face and along it) from a
     // particle a spacing off the face, and the step's motion (a half)
     contactWalls_.clear();
-    if (Pstream::parRun() && dict_.found("walls"))
-    {
-        // Every processor steps the whole solid, but holds the walls near
-        // its own part only
-        FatalIOErrorInFunction(dict_)
-            << "Solid " << body_.name() << ": 'walls' (contact with walls)"
-            << " does not run in parallel yet: run the case serially"
-            << exit(FatalIOError);
-    }
     for (const word& name : dict_.getOrDefault<wordList>("walls", wordList()))
     {
         particleBody& wb = scene.body(name, dict_);
@@ -260,7 +252,20 @@ void Foam::meshless::solidModel::addWallContact(particleField& acc) const
     if (contactWalls_.empty()) return;
     const scalar dx = body_.spacing();
     const scalar c = waveSpeed();
-    const double* x = body_.particles().positions().data();
+    const particleSet& set = body_.particles();
+    const double* x = set.positions().data();
+
+    // A parallel run: every processor holds the whole solid but the walls
+    // near its own part; a particle's contact is its owner's (whose part
+    // holds all its wall neighbours), the same on every processor
+    const bool shared = Pstream::parRun() && set.replicated();
+    const size_t nv = size_t(acc.size())*acc.nComponents();
+    double* out = acc.data();
+    if (shared)
+    {
+        contactAcc_.assign(nv, 0);
+        out = contactAcc_.data();
+    }
     for (contactWall& w : contactWalls_)
     {
         const particleBody& wb = w.wall->ghostBody();
@@ -283,14 +288,25 @@ void Foam::meshless::solidModel::addWallContact(particleField& acc) const
                 {
                     w.active[i] = gap0[i] > 0.25*dx ? 1 : 0;
                 }
+                // (none before the relation's first build)
+                if (shared && label(w.active.size()) == set.size())
+                {
+                    particleDistribution::share(set, w.active.data(), 1);
+                }
             }
             solidWallContact::addAccelerations<d>
             (
                 *w.rel, x, xw, w.wall->contactNormals(),
                 w.wall->contactDepth(), wb.spacing(), 0.5*dx, c*c/(dx*dx),
-                w.active.data(), acc.data()
+                w.active.data(), out
             );
         });
+    }
+    if (shared)
+    {
+        particleDistribution::share(set, out, acc.nComponents());
+        double* a = acc.data();
+        for (size_t k = 0; k < nv; ++k) a[k] += out[k];
     }
 }
 
