@@ -248,6 +248,20 @@ def largest_difference(a, b, field):
     return worst / scale if scale > 0 else worst
 
 
+def same_continuation(t, what, serial, case):
+    """case's bodies at RESTART_END within RESTART_RTOL of serial's"""
+    for body in ("water", "obstacle"):
+        a = read_cloud(serial, "%g" % RESTART_END, body)
+        b = read_cloud(case, "%g" % RESTART_END, body)
+        worst = {f: largest_difference(a, b, f)
+                 for f in ("positions", "U") if f in a}
+        t.check("%s: %s at %g s within %g of the serial continuation (%s)"
+                % (what, body, RESTART_END, RESTART_RTOL,
+                   ", ".join("%s %.1e" % kv for kv in worst.items())),
+                all(v <= RESTART_RTOL and math.isfinite(v)
+                    for v in worst.values()))
+
+
 def restart(t, serial, back):
     """Both the serial case and the reconstructed one continue from 0.01 s
     to RESTART_END"""
@@ -268,18 +282,8 @@ def restart(t, serial, back):
             import re
             m = re.search(r"\((\d+) broken bonds read\)", out)
             read = int(m.group(1)) if m else None
-    for body in ("water", "obstacle"):
-        a = read_cloud(serial, "%g" % RESTART_END, body)
-        b = read_cloud(back, "%g" % RESTART_END, body)
-        worst = {f: largest_difference(a, b, f)
-                 for f in ("positions", "U") if f in a}
-        t.check("restart from the reconstructed case: %s at %g s within"
-                " %g of the serial continuation (%s)"
-                % (body, RESTART_END, RESTART_RTOL,
-                   ", ".join("%s %.1e" % kv
-                                                 for kv in worst.items())),
-                all(v <= RESTART_RTOL and math.isfinite(v)
-                    for v in worst.values()))
+    same_continuation(t, "restart from the reconstructed case", serial,
+                      back)
     return read
 
 
@@ -316,17 +320,7 @@ def parallel_continuation(t, serial, case, serial_read):
             code == 0, out[-1500:])
     if code != 0:
         return
-    for body in ("water", "obstacle"):
-        a = read_cloud(serial, "%g" % RESTART_END, body)
-        b = read_cloud(case, "%g" % RESTART_END, body)
-        worst = {f: largest_difference(a, b, f)
-                 for f in ("positions", "U") if f in a}
-        t.check("parallel continuation: %s at %g s within %g of the serial"
-                " continuation (%s)"
-                % (body, RESTART_END, RESTART_RTOL,
-                   ", ".join("%s %.1e" % kv for kv in worst.items())),
-                all(v <= RESTART_RTOL and math.isfinite(v)
-                    for v in worst.values()))
+    same_continuation(t, "parallel continuation", serial, case)
 
 
 def decomposition_test(t, work):

@@ -38,6 +38,60 @@ struct timed
     }
 };
 
+
+//- Send the particles which of set (ids and every field) on os
+void sendParticles
+(
+    Foam::UOPstream& os,
+    Foam::meshless::particleSet& set,
+    const std::vector<Foam::label>& which
+)
+{
+    using namespace Foam;
+    labelList ids(label(which.size()));
+    forAll(ids, k) ids[k] = set.ids()[which[k]];
+    os << ids;
+    set.forEachField([&](const meshless::particleField& f)
+    {
+        const label nc = f.nComponents();
+        scalarList d(ids.size()*nc);
+        forAll(ids, k)
+        {
+            for (label c = 0; c < nc; ++c) d[k*nc + c] = f(which[k], c);
+        }
+        os << d;
+    });
+}
+
+
+//- Append the particles processor q sent (sendParticles) to set
+void receiveParticles
+(
+    Foam::UIPstream& is,
+    Foam::meshless::particleSet& set,
+    const Foam::label q
+)
+{
+    using namespace Foam;
+    labelList ids(is);
+    const label n0 = set.appendIds(ids.cdata(), ids.size());
+    set.forEachField([&](meshless::particleField& f)
+    {
+        const label nc = f.nComponents();
+        scalarList d(is);
+        if (d.size() != ids.size()*nc)
+        {
+            FatalErrorInFunction
+                << "Body " << set.name() << ", field " << f.name()
+                << ": processor " << q << " sent " << d.size()
+                << " values for " << ids.size() << " particles,"
+                << " expected " << nc << " each (the processors'"
+                << " bodies have other fields)" << abort(FatalError);
+        }
+        std::copy(d.cbegin(), d.cend(), f.data() + size_t(n0)*nc);
+    });
+}
+
 } // End anonymous namespace
 
 
@@ -407,21 +461,7 @@ Foam::label Foam::meshless::particleDistribution::migrate
         UOPstream os(q, pBufs);
         for (label b = 0; b < label(sets_.size()); ++b)
         {
-            particleSet& set = *sets_[b];
-            const std::vector<label>& go = leaving[b][q];
-            labelList ids(label(go.size()));
-            forAll(ids, k) ids[k] = set.ids()[go[k]];
-            os << ids;
-            set.forEachField([&](const particleField& f)
-            {
-                const label nc = f.nComponents();
-                scalarList d(label(go.size())*nc);
-                forAll(ids, k)
-                {
-                    for (label c = 0; c < nc; ++c) d[k*nc + c] = f(go[k], c);
-                }
-                os << d;
-            });
+            sendParticles(os, *sets_[b], leaving[b][q]);
         }
     }
     labelList recvSizes;
@@ -444,30 +484,7 @@ Foam::label Foam::meshless::particleDistribution::migrate
         UIPstream is(q, pBufs);
         for (label b = 0; b < label(sets_.size()); ++b)
         {
-            particleSet& set = *sets_[b];
-            labelList ids(is);
-            const label n0 = set.appendIds(ids.cdata(), ids.size());
-            set.forEachField([&](particleField& f)
-            {
-                const label nc = f.nComponents();
-                scalarList d(is);
-                if (d.size() != ids.size()*nc)
-                {
-                    FatalErrorInFunction
-                        << "Body " << set.name() << ", field " << f.name()
-                        << ": processor " << q << " sent " << d.size()
-                        << " values for " << ids.size() << " particles,"
-                        << " expected " << nc << " each (the processors'"
-                        << " bodies have other fields)" << abort(FatalError);
-                }
-                forAll(ids, k)
-                {
-                    for (label c = 0; c < nc; ++c)
-                    {
-                        f(n0 + k, c) = d[k*nc + c];
-                    }
-                }
-            });
+            receiveParticles(is, *sets_[b], q);
         }
     }
     return nSent;
@@ -742,45 +759,20 @@ void Foam::meshless::particleDistribution::replicate(particleSet& set)
 
     // Every processor's particles to every other
     PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
-    const label n = set.size();
+    std::vector<label> all(set.size());
+    for (label i = 0; i < set.size(); ++i) all[i] = i;
     for (label q = 0; q < nProcs; ++q)
     {
         if (q == me) continue;
         UOPstream os(q, pBufs);
-        os << labelList(UList<label>(set.ids().data(), n));
-        set.forEachField([&](const particleField& f)
-        {
-            os << scalarList
-            (
-                UList<scalar>
-                (
-                    const_cast<double*>(f.data()), n*f.nComponents()
-                )
-            );
-        });
+        sendParticles(os, set, all);
     }
     pBufs.finishedSends();
     for (label q = 0; q < nProcs; ++q)
     {
         if (q == me) continue;
         UIPstream is(q, pBufs);
-        labelList ids(is);
-        const label n0 = set.appendIds(ids.cdata(), ids.size());
-        set.forEachField([&](particleField& f)
-        {
-            const label nc = f.nComponents();
-            scalarList d(is);
-            if (d.size() != ids.size()*nc)
-            {
-                FatalErrorInFunction
-                    << "Body " << set.name() << ", field " << f.name()
-                    << ": processor " << q << " sent " << d.size()
-                    << " values for " << ids.size() << " particles,"
-                    << " expected " << nc << " each (the processors'"
-                    << " bodies have other fields)" << abort(FatalError);
-            }
-            std::copy(d.cbegin(), d.cend(), f.data() + size_t(n0)*nc);
-        });
+        receiveParticles(is, set, q);
     }
 
     // In the order of the ids: the same on every processor (and the
