@@ -430,7 +430,10 @@ void Foam::meshless::restartManifest::checkBody
 
     // The particles of this cloud (-1: none) and, in a parallel run, of
     // every processor's (a collective call, made for every body)
-    const fileName cloudDir(runTime.path()/timeName/lagrangianIO::cloudLocal(body));
+    const fileName cloudDir
+    (
+        runTime.path()/timeName/lagrangianIO::cloudLocal(body)
+    );
     label local = -1;
     {
         word cls;

@@ -397,7 +397,8 @@ void Foam::meshless::particleScene::startParallel(const scalar maxSpacing)
         const particleSet& set = b.particles();
         if (!set.replicated()) continue;
         labelList owned(Pstream::nProcs(), 0);
-        for (label i = 0; i < set.size(); ++i) owned[Pstream::myProcNo()] += set.owns(i);
+        label& mine = owned[Pstream::myProcNo()];
+        for (label i = 0; i < set.size(); ++i) mine += set.owns(i);
         Pstream::gatherList(owned);
         Pstream::scatterList(owned);
         Info<< "    " << b.name() << ": held whole by every processor,"

@@ -281,9 +281,10 @@ Foam::label Foam::meshless::peridynamicFamilies::readBroken
         else
         {
             FatalIOErrorInFunction(is)
-                << path << " is of class " << io.headerClassName() << ": expected "
-                << labelFieldIOField::typeName << " (per particle the ids of its"
-                << " broken partners)" << exit(FatalIOError);
+                << path << " is of class " << io.headerClassName()
+                << ": expected " << labelFieldIOField::typeName
+                << " (per particle the ids of its broken partners)"
+                << exit(FatalIOError);
         }
     }
     if (Pstream::parRun() && set.replicated())

@@ -1,0 +1,256 @@
+#!/usr/bin/python3
+"""Every tutorial, a few steps serially and on 2 processes, the OpenFOAM
+way; the table goes to tutorials.md beside this script.
+
+Usage:
+    benchmarks/parallel/tutorials.py [-steps N] [-np P] [tutorial ...]
+
+Each tutorial is prepared by its own Allrun at its default resolution:
+the solver the Allrun calls is a stand-in that only succeeds, so the
+Allrun does its mesh, seeding and generated files (motion tables) and
+stops at its validation. Then, from the seeded time:
+- the solver runs N steps (default 20: endTime N times the first step,
+  written then) serially;
+- decomposePar (scotch, P subdomains; default 2), mpirun -np P
+  <solver> -parallel (one thread each), reconstructPar;
+- every body's particles at the end, matched by id, are compared: the
+  count, every value finite, and the largest difference of the positions
+  and velocities relative to their largest magnitude. What differs is
+  the order of the sums over neighbours (and, for ISPH, the multigrid's
+  partition; for coupling iterations, their tolerance).
+A tutorial passes when both runs succeed, the particles are the same
+and every value is finite. The wall times are reported beside (2 cores:
+the serial run on one thread).
+"""
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+here = os.path.dirname(os.path.abspath(__file__))
+project = os.path.dirname(os.path.dirname(here))
+sys.path.insert(0, os.path.join(project, "etc", "python"))
+from foamCloud import read_cloud  # noqa: E402
+
+SOLVERS = ("riemannSphFoam", "ulphPdFoam", "isphTlsphFoam", "particleFoam")
+ENV = dict(os.environ, OMP_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1",
+           OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+           OMPI_MCA_mpi_yield_when_idle="1", MESHLESS_PROJECT=project)
+ENV.pop("PWD", None)
+HEADER = "FoamFile { version 2.0; format ascii; class dictionary;" \
+    " object %s; }\n"
+
+
+def sh(cmd, cwd, env=ENV):
+    p = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True,
+                       env=env)
+    return p.returncode, p.stdout + p.stderr
+
+
+def foam_set(case, key, value, file="system/controlDict"):
+    return sh(["foamDictionary", file, "-entry", key, "-set", str(value)],
+              case)
+
+
+def foam_get(case, key, file="system/controlDict"):
+    code, out = sh(["foamDictionary", file, "-entry", key, "-value"], case)
+    return out.strip().splitlines()[-1] if code == 0 and out.strip() \
+        else None
+
+
+def solver_of(tutorial):
+    with open(os.path.join(tutorial, "Allrun")) as f:
+        text = f.read()
+    for s in SOLVERS:
+        if re.search(r"\b%s\b" % s, text):
+            return s
+    return None
+
+
+def prepared(tutorial, case, stand_in):
+    """The tutorial's Allrun with the solvers stood in for: mesh, seeding
+    and the files it generates"""
+    shutil.copytree(tutorial, case, ignore=shutil.ignore_patterns(
+        "[0-9]*", "log.*", "processor*", "postProcessing", "VTK"))
+    env = dict(ENV, PATH=stand_in + os.pathsep + ENV["PATH"])
+    sh(["./Allrun"], case, env)
+    return os.path.isdir(os.path.join(case, "0", "lagrangian"))
+
+
+def clouds(case, t):
+    d = os.path.join(case, t, "lagrangian")
+    return sorted(os.listdir(d)) if os.path.isdir(d) else []
+
+
+def compare(serial, parallel, t):
+    """(same particles, all finite, largest relative difference of
+    positions and U over the bodies)"""
+    same, finite, worst = True, True, 0.0
+    for body in clouds(serial, t):
+        a = read_cloud(serial, t, body)
+        b = read_cloud(parallel, t, body)
+        ia = {i: k for k, i in enumerate(a["id"])}
+        ib = {i: k for k, i in enumerate(b.get("id", []))}
+        if set(ia) != set(ib):
+            same = False
+            continue
+        for f in ("positions", "U"):
+            if f not in a or f not in b:
+                continue
+            diff = scale = 0.0
+            for i, ka in ia.items():
+                for x, y in zip(a[f][ka], b[f][ib[i]]):
+                    finite = finite and abs(x) < 1e300 and abs(y) < 1e300 \
+                        and x == x and y == y
+                    diff = max(diff, abs(x - y))
+                    scale = max(scale, abs(x))
+            if scale > 0:
+                worst = max(worst, diff / scale)
+    return same, finite, worst
+
+
+def run_one(tutorial, work, steps, np_, stand_in):
+    name = os.path.relpath(tutorial, os.path.join(project, "tutorials"))
+    solver = solver_of(tutorial)
+    row = {"tutorial": name, "solver": solver or "-"}
+    if solver is None:
+        row["result"] = "no solver (not a solver tutorial)"
+        return row
+    case = os.path.join(work, name.replace("/", "_"))
+    if not prepared(tutorial, case, stand_in):
+        row["result"] = "FAILED: its Allrun did not seed the case"
+        return row
+    # N first steps, written at the end; the seeded time only
+    for d in os.listdir(case):
+        if re.match(r"^[0-9.e+-]+$", d) and d != "0":
+            shutil.rmtree(os.path.join(case, d))
+    for d in ("postProcessing", "runTime"):
+        p = os.path.join(case, "system", d) if d == "runTime" \
+            else os.path.join(case, d)
+        if os.path.isdir(p):
+            shutil.rmtree(p)
+        elif os.path.isfile(p):
+            os.remove(p)
+    dt = float(foam_get(case, "deltaT"))
+    end = "%.6g" % (steps * dt)
+    foam_set(case, "endTime", end)
+    foam_set(case, "writeControl", "runTime")
+    foam_set(case, "writeInterval", end)
+    foam_set(case, "startFrom", "startTime")
+    foam_set(case, "startTime", 0)
+    foam_set(case, "writeFormat", "binary")
+    parallel = case + ".parallel"
+    shutil.copytree(case, parallel)
+
+    start = time.time()
+    code, out = sh([solver], case)
+    row["serial s"] = "%.1f" % (time.time() - start)
+    if code != 0:
+        row["result"] = "FAILED serially: " + out.strip()[-200:]
+        return row
+    last = sorted((d for d in os.listdir(case)
+                   if re.match(r"^[0-9.e+-]+$", d) and d != "0"),
+                  key=float)
+    if not last:
+        row["result"] = "FAILED: the serial run wrote nothing"
+        return row
+    t = last[-1]
+
+    with open(os.path.join(parallel, "system", "decomposeParDict"),
+              "w") as f:
+        f.write(HEADER % "decomposeParDict"
+                + "numberOfSubdomains %d;\nmethod scotch;\n" % np_)
+    code, out = sh(["decomposePar", "-force"], parallel)
+    if code != 0:
+        row["result"] = "FAILED: decomposePar: " + out.strip()[-200:]
+        return row
+    start = time.time()
+    code, out = sh(["mpirun", "--oversubscribe", "-np", str(np_), solver,
+                    "-parallel"], parallel)
+    row["parallel s"] = "%.1f" % (time.time() - start)
+    with open(os.path.join(parallel, "log." + solver), "w") as f:
+        f.write(out)
+    if code != 0:
+        row["result"] = "FAILED in parallel: " + out.strip()[-300:]
+        return row
+    code, out = sh(["reconstructPar", "-time", t], parallel)
+    if code != 0:
+        row["result"] = "FAILED: reconstructPar: " + out.strip()[-200:]
+        return row
+    same, finite, worst = compare(case, parallel, t)
+    row["time"] = t
+    row["difference"] = "%.1e" % worst
+    ok = same and finite
+    row["result"] = "pass" if ok else (
+        "FAILED: " + ("other particles" if not same else "non-finite"))
+    return row
+
+
+def main(argv):
+    steps, np_, names = 20, 2, []
+    i = 0
+    while i < len(argv):
+        if argv[i] == "-steps":
+            steps = int(argv[i + 1])
+            i += 2
+        elif argv[i] == "-np":
+            np_ = int(argv[i + 1])
+            i += 2
+        else:
+            names.append(argv[i])
+            i += 1
+    root = os.path.join(project, "tutorials")
+    tutorials = [os.path.join(root, n) for n in names] if names else sorted(
+        os.path.join(root, s, t) for s in os.listdir(root)
+        for t in os.listdir(os.path.join(root, s))
+        if os.path.isfile(os.path.join(root, s, t, "Allrun")))
+    work = tempfile.mkdtemp(prefix="parallelTutorials.")
+    stand_in = os.path.join(work, "bin")
+    os.makedirs(stand_in)
+    for s in SOLVERS:
+        p = os.path.join(stand_in, s)
+        with open(p, "w") as f:
+            f.write("#!/bin/sh\nexit 0\n")
+        os.chmod(p, 0o755)
+    rows = []
+    try:
+        for tut in tutorials:
+            row = run_one(tut, work, steps, np_, stand_in)
+            rows.append(row)
+            print("%-36s %s" % (row["tutorial"], row["result"]), flush=True)
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+
+    cols = ("tutorial", "solver", "time", "serial s", "parallel s",
+            "difference", "result")
+    lines = [
+        "# Every tutorial in parallel",
+        "",
+        "`benchmarks/parallel/tutorials.py -steps %d -np %d`: each tutorial"
+        " at its default resolution, %d steps serially (one thread) and on"
+        " %d processes (scotch), the particles at the end compared by id"
+        " (difference: the largest of the positions' and velocities',"
+        " relative to their largest magnitude)." % (steps, np_, steps, np_),
+        "",
+        "| " + " | ".join(cols) + " |",
+        "|" + "---|" * len(cols),
+    ]
+    for r in rows:
+        lines.append("| " + " | ".join(str(r.get(c, "")) for c in cols)
+                     + " |")
+    passed = sum(1 for r in rows if r["result"] == "pass")
+    skipped = sum(1 for r in rows if r["result"].startswith("no solver"))
+    lines += ["", "%d of %d solver tutorials pass." % (passed,
+                                                    len(rows) - skipped)]
+    if not names:
+        with open(os.path.join(here, "tutorials.md"), "w") as f:
+            f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+    return 0 if passed == len(rows) - skipped else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
