@@ -9,8 +9,8 @@ Each tutorial is prepared by its own Allrun at its default resolution:
 the solver the Allrun calls is a stand-in that only succeeds, so the
 Allrun does its mesh, seeding and generated files (motion tables) and
 stops at its validation. Then, from the seeded time:
-- the solver runs N steps (default 20: endTime N times the first step,
-  written then) serially; a projection fluid's pressureSolver is set to
+- the solver runs N steps (default 20: stopAt nextWrite, written every
+  N steps) serially; a projection fluid's pressureSolver is set to
   BoomerAMG (in both runs), the one that solves over the processors;
 - decomposePar (scotch, P subdomains; default 2), mpirun -np P
   <solver> -parallel (one thread each), reconstructPar;
@@ -135,11 +135,10 @@ def run_one(tutorial, work, steps, np_, stand_in):
             shutil.rmtree(p)
         elif os.path.isfile(p):
             os.remove(p)
-    dt = float(foam_get(case, "deltaT"))
-    end = "%.6g" % (steps * dt)
-    foam_set(case, "endTime", end)
-    foam_set(case, "writeControl", "runTime")
-    foam_set(case, "writeInterval", end)
+    # N steps exactly: the first write after N steps stops the run
+    foam_set(case, "stopAt", "nextWrite")
+    foam_set(case, "writeControl", "timeStep")
+    foam_set(case, "writeInterval", steps)
     foam_set(case, "startFrom", "startTime")
     foam_set(case, "startTime", 0)
     foam_set(case, "writeFormat", "binary")
