@@ -336,8 +336,9 @@ def restart(t, seeded, uninterrupted, solver, method, n, coeffs,
 
     # As a kill between the processors' commits of a write leaves them:
     # one processor without the latest time
-    shutil.rmtree(os.path.join(case, "processor1", "0.08"))
-    set_entry(case, "system/controlDict", "endTime", 0.1)
+    shutil.rmtree(os.path.join(case, "processor1", times[1]))
+    set_entry(case, "system/controlDict", "endTime",
+              "%g" % (1.5*float(times[1]) - 0.5*float(times[0])))
     code, out = mpirun(n, solver, case)
     t.check("%s: processors at different latest times stop the run"
             " (OpenFOAM's Time: start time not the same)" % name,
