@@ -77,6 +77,23 @@ then in or out of its relation).
     plate's velocities, which are tiny). With the tutorials' interface
     tolerance 1e-4 the iterations amplify the last bits to the tolerance,
     so such runs agree only to it.
+- ulphPdFoam, the sluice gate at 3.5 mm to 0.002 s, simple (2 1 1): the
+  tank's ghost particles whose supports reach past its deepest seeded
+  layer have their shape tensors completed; the deepest layer is the
+  whole wall's (a processor's part may lack a corner's deepest
+  particles: the corner's fluid particle then moved 40 % differently
+  after a step). The same particles to RTOL, and as many completed.
+- ulphPdFoam, the cantilever beam at 2 cm (NOSB-PD, clamped on a
+  cellZone), simple (2 1 1): every processor holds the whole beam but
+  only its part of the mesh, so a constraint's region of cells is
+  combined over the processors; bit for bit.
+- riemannSphFoam, the Liao plate at 2 mm (TLSPH, `walls (tank)`) pushed
+  over by a body force of 300 m/s^2, hierarchical (4 1 1: the plate's
+  right face on the cut at x = 0.6 m, so that it folds from one
+  processor's part into the next's): it lies on the floor at 0.03 s (its
+  lowest particle dx/2 above it; through it without the contact) and
+  springs back by 0.06 s; the contact of each particle is its owner's,
+  shared: the same particles to RTOL.
 - The distributed linear solve (tests/parallel/parallelLinearSolve):
   a symmetric and a non-symmetric system of 3600 rows split over 2 and 3
   processors, solved by BoomerAMG on every processor's rows, to the
@@ -356,6 +373,8 @@ def serial_and_parallel(t, work, name, tutorial, solver, dx, times,
         return None
     case = seeded_copy(serial, os.path.join(work, name + "Parallel"))
     code, out = run([solver], serial)
+    with open(os.path.join(serial, "log.serial"), "w") as f:
+        f.write(out)
     t.check("%s: serial run succeeds" % name, code == 0, out[-1500:])
     if code != 0 or not parallel_run(t, case, solver, name, method, n,
                                      coeffs):
@@ -490,6 +509,78 @@ def isph_plate(t, work):
                     ("0.005", "0.01"), ISPH_RTOL, RATES_RTOL)
 
 
+def wall_corner(t, work):
+    """A ghost wall's shape tensors completed behind its deepest layer:
+    the deepest layer over the whole wall (a processor's part may lack a
+    corner's deepest particles)"""
+    cases = serial_and_parallel(
+        t, work, "wallCorner", "tutorials/ulphPdFoam/sluiceGate",
+        "ulphPdFoam", 0.0035, ("0.001", "0.002"), "simple", 2,
+        "coeffs { n (2 1 1); }")
+    if not cases:
+        return
+    same_clouds(t, "wallCorner", cases[0], cases[1], ("water", "gate"),
+                ("0.001", "0.002"), RTOL, RATES_RTOL)
+    import re
+    completed = []
+    for case, log in zip(cases, ("log.serial", "log.ulphPdFoam")):
+        path = os.path.join(case, log)
+        text = open(path).read() if os.path.isfile(path) else ""
+        m = re.search(r"completed behind the seeded layers for (\d+)", text)
+        completed.append(m and int(m.group(1)))
+    t.check("wallCorner: the tank's shape tensors completed for as many"
+            " particles as serially %s" % completed,
+            completed[0] is not None and completed[0] == completed[1] > 0)
+
+
+def clamp_zone(t, work):
+    """A solid's constraint on a region of cells (cellZone): every
+    processor holds the whole solid but only its part of the mesh"""
+    cases = serial_and_parallel(
+        t, work, "clampZone", "tutorials/ulphPdFoam/cantileverBeam",
+        "ulphPdFoam", 0.02, ("5e-05", "0.0001"), "simple", 2,
+        "coeffs { n (2 1 1); }")
+    if cases:
+        same_clouds(t, "clampZone", cases[0], cases[1], ("beam",),
+                    ("5e-05", "0.0001"), 0)
+
+
+def wall_contact(t, work):
+    """A solid's contact with a wall, computed by each particle's owner and
+    shared: the Liao plate at 2 mm pushed over by a body force of 300
+    m/s^2 (the gate held still) lies on the floor at 0.03 s and springs
+    back by 0.06 s"""
+    entries = [
+        ("constant/particleProperties", "bodies/gate/motion", None),
+        ("constant/particleProperties",
+         "bodies/plate/effects/gravity/value", "(300 -9.81 0)")]
+    cases = serial_and_parallel(
+        t, work, "wallContact", "tutorials/riemannSphFoam/liaoPlate",
+        "riemannSphFoam", 0.002, ("0.03", "0.06"), "hierarchical", 4,
+        "coeffs { n (4 1 1); order xyz; }", entries)
+    if not cases:
+        return
+    same_clouds(t, "wallContact", cases[0], cases[1], ("water", "plate"),
+                ("0.03", "0.06"), RTOL, RATES_RTOL)
+    # The contact acts: without it the plate goes into the floor
+    free = os.path.join(work, "wallContactFree")
+    if not prepared(t, "tutorials/riemannSphFoam/liaoPlate", free, 0.002,
+                    0.06, 0.03, entries + [("constant/particleProperties",
+                                            "bodies/plate/walls", None)]):
+        return
+    code, out = run(["riemannSphFoam"], free)
+    t.check("wallContact: the run without the contact succeeds", code == 0,
+            out[-1500:])
+    if code != 0:
+        return
+    lowest = [min(y for x, y, *z in read_cloud(case, "0.03", "plate")
+                  ["positions"] if x > 0.6) for case in (cases[0], free)]
+    t.check("wallContact: at 0.03 s the folded plate lies on the floor"
+            " (lowest particle right of its foot at %.4f m, dx/2 0.001 m)"
+            " and without the contact goes through it (%.4f m)"
+            % tuple(lowest), 0 < lowest[0] < 0.002 and lowest[1] < 0)
+
+
 def linear_solve(t, work):
     import subprocess
     for n in (1, 2, 3):
@@ -532,4 +623,5 @@ if __name__ == "__main__":
     sys.exit(run_parts("parallelRuns", dam_break, ulph_dam_break,
                        isph_dam_break, taylor_green, riemann_gate,
                        pd_obstacle, open_channel, tlsph_plate, isph_plate,
-                       linear_solve, free_fall))
+                       wall_corner, clamp_zone, wall_contact, linear_solve,
+                       free_fall))

@@ -329,20 +329,30 @@ Foam::label Foam::meshless::bodyModels::ghostWall::completeFarSide
     std::unordered_set<int64_t> taken;
     taken.reserve(2*n);
     double dmax = 0;
-    for (label s = 0; s < n; ++s)
+    bool offLattice = false;
+    for (label s = 0; s < n && !offLattice; ++s)
     {
         for (int d = 0; d < Dim; ++d)
         {
             const double r = (x[s*Dim + d] - x[d])/dx;
             if (std::abs(r - std::round(r)) > 1e-3 || std::abs(r) >= off)
             {
-                return -1;
+                offLattice = true;
+                break;
             }
             index[3*s + d] = std::llround(r);
         }
         taken.insert(key(index[3*s], index[3*s + 1], index[3*s + 2]));
         dmax = std::max(dmax, double(dist(s, 0)));
     }
+    // In a parallel run over the whole wall: a processor's part may lack
+    // the deepest particles (a corner's)
+    if (Pstream::parRun())
+    {
+        reduce(offLattice, orOp<bool>());
+        reduce(dmax, maxOp<double>());
+    }
+    if (offLattice) return -1;
 
     const label* rowStart = own.offsetData();
     const label* idx = own.indexData();
@@ -371,6 +381,8 @@ Foam::label Foam::meshless::bodyModels::ghostWall::completeFarSide
         }
     }
 
+    // Counted over the particles this processor owns
+    const label nOwned = set.nOwned();
     label nCompleted = 0;
     #pragma omp parallel for schedule(static) reduction(+:nCompleted)
     for (label s = 0; s < n; ++s)
@@ -414,7 +426,7 @@ Foam::label Foam::meshless::bodyModels::ghostWall::completeFarSide
         if (M.squaredNorm() > 0)
         {
             Eigen::Map<tensorD<Dim>>(Mw + size_t(s)*Dim*Dim) += M;
-            ++nCompleted;
+            if (s < nOwned) ++nCompleted;
         }
     }
     return nCompleted;
@@ -438,10 +450,14 @@ void Foam::meshless::bodyModels::ghostWall::prepare
         return;
     }
     computeOwnShapeTensors(own, Mwall_);
-    const label nCompleted = dispatchDim
+    label nCompleted = dispatchDim
     (
         body_.dim(), [&](auto d) { return completeFarSide<d>(W, own); }
     );
+    if (Pstream::parRun() && nCompleted >= 0)
+    {
+        reduce(nCompleted, sumOp<label>());
+    }
     if (nCompleted > 0)
     {
         Info<< "    ghostWall " << body_.name() << ": shape tensors"

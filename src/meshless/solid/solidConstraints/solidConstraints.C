@@ -135,6 +135,14 @@ Foam::meshless::solidConstraints::solidConstraints
         );
         boolList in;
         region->inside(pts, cells, in);
+        // A replicated solid (parallel run) is whole on every processor,
+        // each holding only its part of the mesh: a region of cells
+        // (cellZone, cellSet) holds a particle on one processor only
+        if (Pstream::parRun() && particles.replicated())
+        {
+            Pstream::listCombineGather(in, orEqOp<bool>());
+            Pstream::listCombineScatter(in);
+        }
 
         label count = 0;
         scalar m = 0;
