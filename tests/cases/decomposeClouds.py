@@ -29,7 +29,10 @@ step apart in the two runs and the water's velocities differ by 1e-3).
 The decomposed case (simple) continues from 0.01 s in parallel (2
 processors, each starting from its own files of the obstacle's broken
 bonds, which they share: the solid is whole on every processor) and ends
-within RESTART_RTOL of the serial continuation.
+within RESTART_RTOL of the serial continuation. decomposePar writes no
+legacy positions (ParaView's reader needs them); the solver adds them at
+its start, and ParaView's reader then opens each processor's start time
+with every particle once.
 """
 import math
 import os
@@ -304,6 +307,12 @@ def parallel_continuation(t, serial, case, serial_read):
     set_entry(case, "system/controlDict", "endTime", RESTART_END)
     set_entry(case, "system/controlDict", "writeInterval", 0.0001)
     set_entry(case, "system/controlDict", "startFrom", "latestTime")
+    procs = [os.path.join(case, d) for d in processors(case)]
+    legacy = [os.path.join(p, "0.01", "lagrangian", b, "positions")
+              for p in procs for b in BODIES
+              if os.path.isdir(os.path.join(p, "0.01", "lagrangian", b))]
+    t.check("decomposePar wrote no legacy positions (%d clouds)"
+            % len(legacy), legacy and not any(map(os.path.isfile, legacy)))
     code, out = mpirun(case)
     t.check("%s -parallel continues the decomposed case from 0.01 s"
             % SOLVER, code == 0, out[-3000:])
@@ -315,6 +324,17 @@ def parallel_continuation(t, serial, case, serial_read):
             " serial restart %s)" % (read and read.group(1), serial_read),
             read is not None and int(read.group(1)) == serial_read > 0,
             out[-1500:])
+    # The solver gave decomposePar's clouds the legacy positions ParaView's
+    # reader needs: each processor's start time opens with its particles
+    serial_counts = {b: len(read_cloud(serial, "0.01", b)["id"])
+                     for b in BODIES}
+    seen = {b: 0 for b in BODIES}
+    for p in procs:
+        for b, c in read_clouds(p, 0.01).items():
+            seen[b] = seen.get(b, 0) + c["particles"]
+    t.check("ParaView's reader opens the processors' clouds at the start"
+            " time, every particle once (%s; serially %s)"
+            % (seen, serial_counts), seen == serial_counts)
     code, out = run(["reconstructPar", "-latestTime"], case)
     t.check("reconstructPar of the parallel continuation succeeds",
             code == 0, out[-1500:])

@@ -683,6 +683,53 @@ void Foam::meshless::lagrangianIO::writeField
 }
 
 
+void Foam::meshless::lagrangianIO::addLegacyPositions
+(
+    const Time& runTime,
+    const word& timeName,
+    const word& body
+)
+{
+    const fileName dir = runTime.path()/timeName/cloudLocal(body);
+    const fileName posFile = dir/particleSet::positionsName;
+    if
+    (
+        isFile(posFile) || isFile(posFile + ".gz")
+     || !isFile(dir/exactPositionName)
+    )
+    {
+        return;
+    }
+    IOobjectList objects(runTime, timeName, cloudLocal(body));
+    const autoPtr<IOField<vector>> pExact
+    (
+        readIOField<vector>(*objects.findObject(exactPositionName), body)
+    );
+    const IOField<vector>& exact = pExact();
+
+    const fileName tmp = posFile + ".tmp";
+    {
+        OFstream os(tmp, IOstream::ASCII);
+        os.precision(max(os.precision(), restartPrecision));
+        cloudObject(particleSet::positionsName, runTime, timeName, body)
+            .writeHeader(os, "Cloud<passiveParticle>");
+        os  << exact.size() << nl << token::BEGIN_LIST << nl;
+        forAll(exact, i)
+        {
+            os  << exact[i] << token::SPACE << -1 << nl;
+        }
+        os  << token::END_LIST << nl;
+        IOobject::writeEndDivider(os);
+        if (!os.good())
+        {
+            FatalErrorInFunction
+                << "Failed writing " << tmp << exit(FatalError);
+        }
+    }
+    Foam::mv(tmp, posFile);
+}
+
+
 void Foam::meshless::lagrangianIO::read
 (
     particleSet& set,

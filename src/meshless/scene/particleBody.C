@@ -58,7 +58,16 @@ Foam::meshless::particleBody::particleBody
             << ". Run seedParticles, or correct the body name."
             << exit(FatalIOError);
     }
-    if (here) lagrangianIO::read(set_, runTime, runTime.timeName());
+    if (here)
+    {
+        lagrangianIO::read(set_, runTime, runTime.timeName());
+        // A cloud of decomposePar or reconstructPar: ParaView's reader
+        // needs the legacy positions these utilities do not write
+        lagrangianIO::addLegacyPositions
+        (
+            runTime, runTime.timeName(), name
+        );
+    }
     if (Pstream::parRun()) unifyFields();
 
     if (dict.found("spacing"))
