@@ -436,7 +436,13 @@ Foam::meshless::lagrangianIO::meshLocator::meshLocator(const polyMesh& mesh)
     ),
     tetFace_(mesh.nCells(), -1),
     tetPt_(mesh.nCells(), -1)
-{}
+{
+    // The faces' tet base points: OpenFOAM makes them when first asked
+    // for, with a collective exchange over the processor patches; made
+    // here on every processor, not in locate, which a processor holding
+    // no particle leaves early (a parallel run hung at its first write)
+    (void)mesh.tetBasePtIs();
+}
 
 
 Foam::meshless::lagrangianIO::meshLocation

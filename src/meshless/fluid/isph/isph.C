@@ -1212,7 +1212,8 @@ void Foam::meshless::bodyModels::isph::advance
     // particles it covers (isphEquations::dry); water without pressure (a
     // start from rest) covers them all for this step
     interpolateBoundaries();
-    if (p_.maxMagnitude() == 0)
+    // (over every processor: one may hold only surface water)
+    if (returnReduce(p_.maxMagnitude(), maxOp<scalar>()) == 0)
     {
         for (size_t k = 1; k < src_.size(); ++k)
         {

@@ -185,8 +185,10 @@ void Foam::meshless::bodyModels::ulph::evaluate
     (
         n, ctx_.sources, Minv_.data(), lambdaFloor_, degenerate_.data()
     );
+    // Counted over the own particles (and every processor's)
     nDegenerate_ = 0;
-    for (label i = 0; i < n; ++i) nDegenerate_ += degenerate_[i];
+    for (label i = 0; i < set.nOwned(); ++i) nDegenerate_ += degenerate_[i];
+    if (Pstream::parRun()) reduce(nDegenerate_, sumOp<label>());
     if (nDegenerate_ > maxDegenerate_)
     {
         maxDegenerate_ = nDegenerate_;

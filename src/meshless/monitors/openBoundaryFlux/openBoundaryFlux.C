@@ -45,10 +45,18 @@ Foam::meshless::monitors::openBoundaryFlux::openBoundaryFlux
 
     const dictionary* state = restartState();
     if (!state) return;
+    // The counts written are every processor's together (the same in a
+    // serial case, its decomposed copies and a reconstructed one): the
+    // master continues them
+    const bool master = Pstream::master();
     for (openBoundary& ob : boundaries_)
     {
         const dictionary& d = state->subDict(ob.name());
-        ob.setCounters(d.get<label>("particles"), d.get<scalar>("mass"));
+        ob.setCounters
+        (
+            master ? d.get<label>("particles") : 0,
+            master ? d.get<scalar>("mass") : 0
+        );
     }
     for (const label k : bodyOf_)
     {
@@ -108,8 +116,8 @@ void Foam::meshless::monitors::openBoundaryFlux::writeState
     for (const openBoundary& ob : boundaries_)
     {
         dictionary d;
-        d.add("particles", ob.particles());
-        d.add("mass", ob.mass());
+        d.add("particles", returnReduce(ob.particles(), sumOp<label>()));
+        d.add("mass", returnReduce(ob.mass(), sumOp<scalar>()));
         dict.add(ob.name(), d);
     }
     for (const label k : bodyOf_)

@@ -67,6 +67,21 @@ Foam::meshless::solidConstraints::solidConstraints
     {
         cells[i] = search.findCell(pts[i]);
     }
+    // A replicated solid (parallel run) is whole on every processor, each
+    // holding only its part of the mesh: a region's answer for a particle
+    // is that of the processor whose cells hold it (a region of cells,
+    // alone or in a union, intersection or difference, differs elsewhere)
+    const bool combine = Pstream::parRun() && particles.replicated();
+    labelList finder(combine ? n : 0, -1);
+    if (combine)
+    {
+        forAll(cells, i)
+        {
+            if (cells[i] >= 0) finder[i] = Pstream::myProcNo();
+        }
+        Pstream::listCombineGather(finder, maxEqOp<label>());
+        Pstream::listCombineScatter(finder);
+    }
 
     const particleField& mass = particles.field("mass");
 
@@ -135,11 +150,17 @@ Foam::meshless::solidConstraints::solidConstraints
         );
         boolList in;
         region->inside(pts, cells, in);
-        // A replicated solid (parallel run) is whole on every processor,
-        // each holding only its part of the mesh: a region of cells
-        // (cellZone, cellSet) holds a particle on one processor only
-        if (Pstream::parRun() && particles.replicated())
+        if (combine)
         {
+            // (a particle in no processor's cells: every processor's
+            // answer is the same)
+            forAll(in, i)
+            {
+                if (finder[i] >= 0 && finder[i] != Pstream::myProcNo())
+                {
+                    in[i] = false;
+                }
+            }
             Pstream::listCombineGather(in, orEqOp<bool>());
             Pstream::listCombineScatter(in);
         }
