@@ -109,9 +109,12 @@ def quick(t, work):
                     os.path.isfile(os.path.join(out, s + "-quick.png")))
         again = subprocess.run(cmd, capture_output=True, text=True)
         made = [line for line in again.stdout.splitlines()
-                if line.endswith(")") and not line.endswith("(reused)")]
-        t.check("%s: the same command again reuses every run" % what,
-                again.returncode == 0 and not made, again.stdout[-1500:])
+                if "(ran" in line]
+        reused = [line for line in again.stdout.splitlines()
+                  if "(reused" in line]
+        t.check("%s: the same command again reuses every run (%d)"
+                % (what, len(reused)), again.returncode == 0 and not made
+                and len(reused) == n_rows, again.stdout[-1500:])
 
 
 if __name__ == "__main__":
