@@ -387,6 +387,18 @@ def serial_and_parallel(t, work, name, tutorial, solver, dx, times,
     return serial, case
 
 
+def compared(t, work, name, tutorial, solver, dx, times, method, n,
+             coeffs, bodies, rtol, rates=None, entries=(), files=()):
+    """serial_and_parallel, then every body's clouds compared at times
+    (same_clouds); the cases (serial, parallel), or None"""
+    cases = serial_and_parallel(t, work, name, tutorial, solver, dx, times,
+                                method, n, coeffs, entries, files)
+    if cases:
+        same_clouds(t, name, cases[0], cases[1], bodies, times, rtol,
+                    rates)
+    return cases
+
+
 def ulph_dam_break(t, work):
     cases = serial_and_parallel(
         t, work, "ulph", "tutorials/ulphPdFoam/damBreak", "ulphPdFoam",
@@ -474,14 +486,13 @@ def pd_obstacle(t, work):
 
 
 def open_channel(t, work):
-    cases = serial_and_parallel(
+    cases = compared(
         t, work, "openChannel", "tutorials/riemannSphFoam/turekHronFSI2",
         "riemannSphFoam", 0.02, ("0.5", "1"), "hierarchical", 3,
-        "coeffs { n (3 1 1); order xyz; }")
+        "coeffs { n (3 1 1); order xyz; }", ("water", "flag"), RTOL,
+        RATES_RTOL)
     if not cases:
         return
-    same_clouds(t, "openChannel", cases[0], cases[1], ("water", "flag"),
-                ("0.5", "1"), RTOL, RATES_RTOL)
     flux = [monitor_rows(c, "openBoundaries")[-1] for c in cases]
     t.check("openChannel: the particles in and out (inflow, outflow) as"
             " serially: %s, %s" % (flux[0][1:], flux[1][1:]),
@@ -543,14 +554,12 @@ def wall_corner(t, work):
     """A ghost wall's shape tensors completed behind its deepest layer:
     the deepest layer over the whole wall (a processor's part may lack a
     corner's deepest particles)"""
-    cases = serial_and_parallel(
+    cases = compared(
         t, work, "wallCorner", "tutorials/ulphPdFoam/sluiceGate",
         "ulphPdFoam", 0.0035, ("0.001", "0.002"), "simple", 2,
-        "coeffs { n (2 1 1); }")
+        "coeffs { n (2 1 1); }", ("water", "gate"), RTOL, RATES_RTOL)
     if not cases:
         return
-    same_clouds(t, "wallCorner", cases[0], cases[1], ("water", "gate"),
-                ("0.001", "0.002"), RTOL, RATES_RTOL)
     completed = []
     for case, log in zip(cases, ("log.serial", "log.ulphPdFoam")):
         path = os.path.join(case, log)
@@ -566,27 +575,21 @@ def clamp_zone(t, work):
     """A solid's constraint on a region of cells (cellZone), alone and in
     a difference: every processor holds the whole solid but only its
     part of the mesh"""
-    cases = serial_and_parallel(
-        t, work, "clampZone", "tutorials/ulphPdFoam/cantileverBeam",
-        "ulphPdFoam", 0.02, ("5e-05", "0.0001"), "simple", 2,
-        "coeffs { n (2 1 1); }")
-    if cases:
-        same_clouds(t, "clampZone", cases[0], cases[1], ("beam",),
-                    ("5e-05", "0.0001"), 0)
+    compared(t, work, "clampZone", "tutorials/ulphPdFoam/cantileverBeam",
+             "ulphPdFoam", 0.02, ("5e-05", "0.0001"), "simple", 2,
+             "coeffs { n (2 1 1); }", ("beam",), 0)
     # The same clamp as a difference: a box reaching into the other
     # processor's part, less the beam's zone (each particle's answer is
     # that of the processor holding its cell)
     region = ("{ type difference; regions ({ type box; min (-1 -1 -1);"
               " max (0.75 1 1); } { type cellZone; zone beam; }); }")
-    cases = serial_and_parallel(
+    cases = compared(
         t, work, "clampDifference", "tutorials/ulphPdFoam/cantileverBeam",
         "ulphPdFoam", 0.02, ("5e-05", "0.0001"), "simple", 2,
-        "coeffs { n (2 1 1); }",
-        [("constant/particleProperties",
-          "bodies/beam/constraints/root/region", region)])
+        "coeffs { n (2 1 1); }", ("beam",), 0,
+        entries=[("constant/particleProperties",
+                  "bodies/beam/constraints/root/region", region)])
     if cases:
-        same_clouds(t, "clampDifference", cases[0], cases[1], ("beam",),
-                    ("5e-05", "0.0001"), 0)
         held = [re.findall(r"constraint root: .*",
                            open(os.path.join(c, f)).read())
                 for c, f in zip(cases, ("log.serial", "log.ulphPdFoam"))]
@@ -603,14 +606,13 @@ def wall_contact(t, work):
         ("constant/particleProperties", "bodies/gate/motion", None),
         ("constant/particleProperties",
          "bodies/plate/effects/gravity/value", "(300 -9.81 0)")]
-    cases = serial_and_parallel(
+    cases = compared(
         t, work, "wallContact", "tutorials/riemannSphFoam/liaoPlate",
         "riemannSphFoam", 0.002, ("0.03", "0.06"), "hierarchical", 4,
-        "coeffs { n (4 1 1); order xyz; }", entries)
+        "coeffs { n (4 1 1); order xyz; }", ("water", "plate"), RTOL,
+        RATES_RTOL, entries)
     if not cases:
         return
-    same_clouds(t, "wallContact", cases[0], cases[1], ("water", "plate"),
-                ("0.03", "0.06"), RTOL, RATES_RTOL)
     # The contact acts: without it the plate goes into the floor
     free = os.path.join(work, "wallContactFree")
     if not prepared(t, "tutorials/riemannSphFoam/liaoPlate", free, 0.002,
