@@ -211,9 +211,10 @@ Foam::meshless::particleDistribution::particleDistribution
     }
     reduce(edge, maxOp<scalar>());
 
-    // Every processor's part
+    // Every processor's part (its own points: polyMesh::bounds() is the
+    // whole mesh's, reduced over the processors)
     List<boundBox> parts(nProcs);
-    parts[me] = mesh.bounds();
+    parts[me] = boundBox(mesh.points(), false);
     Pstream::gatherList(parts);
     Pstream::scatterList(parts);
 
