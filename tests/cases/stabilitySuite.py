@@ -6,21 +6,37 @@ check; the summary line counts the invariants met and missed.
 And on the suite's baffle fracture run (ULPH + NOSB-PD, 4 mm, 0.4 s):
 ParaView's reader (vtkOpenFOAMReader) loads its last time, the water and
 the obstacle with their particle counts and the obstacle's damage and
-plastic strain fields."""
+plastic strain fields.
+
+And -continue: the ULPH dam break's coarse run made again in a second
+folder, its Allrun stopped (SIGTERM to its process group) once 0.2 s is
+written, the suite run again with -continue: it continues the run from
+its latest time (not a new Allrun), the run reaches 0.6 s in two runs
+(their runCost files), and its particles at 0.6 s are those of the
+uninterrupted run (1e-9 m: the restart is exact); a third -continue
+leaves the finished run as it is."""
 import glob
 import os
+import signal
+import subprocess
 import sys
+import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "stability"))
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "lib"))
 import stability  # noqa: E402
 from caseTest import CaseTest  # noqa: E402
-from foamCloud import read_positions, times  # noqa: E402
+from foamCloud import read_cloud, read_positions, times  # noqa: E402
+from foamMonitor import run_costs  # noqa: E402
 from readClouds import read_clouds  # noqa: E402
 
+#: The run -continue is tried on, and where its Allrun is stopped [s]
+CONTINUED = ("damBreak", "ULPH")
+STOP_AT = 0.2
 
-def reader_checks(work):
+
+def reader_checks(work, threads):
     t = CaseTest("stabilitySuite")
     runs = glob.glob(os.path.join(work, "obstacleFracture-*"))
     t.check("the baffle fracture's run is there", len(runs) == 1, str(runs))
@@ -37,7 +53,82 @@ def reader_checks(work):
         wanted = {"damage", "plasticStrain", "U"}
         t.check("obstacleFracture: the reader sees the obstacle's damage,"
                 " plasticStrain, U", wanted <= seen, str(sorted(seen)))
+    continue_checks(t, work, threads)
     return t.passed, t.failed
+
+
+def suite(work, threads):
+    """The suite's command on one case and method, in work, -continue"""
+    return [sys.executable, stability.__file__, "-case", CONTINUED[0],
+            "-method", CONTINUED[1], "-work", work, "-threads",
+            str(threads), "-continue"]
+
+
+def continue_checks(t, work, threads):
+    """A run stopped and continued by -continue equals the uninterrupted
+    one (the suite's own run of CONTINUED in work, on as many threads)"""
+    whole = glob.glob(os.path.join(work, CONTINUED[0] + "-" + CONTINUED[1]))
+    t.check("the uninterrupted %s %s run is there" % CONTINUED,
+            len(whole) == 1, str(whole))
+    if len(whole) != 1:
+        return
+    again = os.path.join(work, "continued")
+    os.makedirs(again, exist_ok=True)
+    case = os.path.join(again, os.path.basename(whole[0]))
+    proc = subprocess.Popen(suite(again, threads), stdout=subprocess.DEVNULL,
+                            stderr=subprocess.STDOUT, start_new_session=True)
+    stopped = None
+    while proc.poll() is None:
+        done = [v for v, _ in times(case)] if os.path.isdir(case) else []
+        if done and done[-1] >= STOP_AT - 1e-9:
+            stopped = done[-1]
+            os.killpg(proc.pid, signal.SIGTERM)
+            break
+        time.sleep(0.05)
+    proc.wait()
+    t.check("-continue: the first run stopped at %s s, before its end"
+            % stopped, stopped is not None and stopped < 0.6 - 1e-9)
+    if stopped is None:
+        return
+    out = subprocess.run(suite(again, threads), capture_output=True,
+                         text=True)
+    logs = glob.glob(os.path.join(case, "log.*.continued0"))
+    t.check("-continue: the run is continued by its solver (%s), not made"
+            " again" % [os.path.basename(f) for f in logs],
+            len(logs) == 1 and os.path.isfile(os.path.join(case,
+                                                           "Allrun.log")),
+            out.stdout[-2000:])
+    costs = run_costs(case)
+    t.check("-continue: two runs (runCost files: %d), the last one"
+            " complete" % len(costs), len(costs) == 2
+            and costs[-1].get("completed", "false") in ("true", "yes", "on",
+                                                         "1"),
+            str(costs[-1] if costs else None))
+    last = times(whole[0])[-1][1]
+    if times(case)[-1][1] != last:
+        t.check("-continue: the continued run reached %s s" % last, False,
+                "last time %s" % times(case)[-1][1])
+        return
+    diff = 0.0
+    for body in ("water",):
+        a, b = read_cloud(whole[0], last, body), read_cloud(case, last, body)
+        pos = dict(zip(a["id"], a["positions"]))
+        for i, p in zip(b["id"], b["positions"]):
+            q = pos.get(i)
+            if q is None:
+                diff = float("inf")
+                break
+            diff = max(diff, max(abs(p[c] - q[c]) for c in range(3)))
+    t.check("-continue: its water at %s s is the uninterrupted run's"
+            " (largest difference %.3g m < 1e-9)" % (last, diff),
+            diff < 1e-9)
+    before = len(glob.glob(os.path.join(case, "log.*.continued*")))
+    out = subprocess.run(suite(again, threads), capture_output=True,
+                         text=True)
+    t.check("-continue: a finished run is only checked again (no solver"
+            " run), its invariants met", before == len(glob.glob(
+                os.path.join(case, "log.*.continued*")))
+            and out.returncode == 0, out.stdout[-2000:])
 
 
 if __name__ == "__main__":

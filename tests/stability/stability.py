@@ -3,7 +3,7 @@
 and the same invariants checked at every written time of every run.
 
 Usage: tests/stability/Allrun [-full] [-case C] [-method M] [-threads N]
-                              [-work DIR] [-keep]
+                              [-work DIR] [-keep] [-continue]
 
   (default)   the coarse form (./Alltest runs it): coarse spacings, and
               the cases too costly for the CI budget cut short (the
@@ -15,6 +15,13 @@ Usage: tests/stability/Allrun [-full] [-case C] [-method M] [-threads N]
   -threads N  OpenMP threads of every run (default 2)
   -work DIR   where the runs go (default a scratch folder, removed at the
               end unless -keep)
+  -continue   with -work: a run already in DIR made by this form is
+              continued from its latest written time (the solver again,
+              startFrom latestTime; its wall time adds up over the
+              restarts), or only checked when it reached its end; the
+              others are made afresh. The full form's longest run (the
+              ISPH rolling tank, about 4.5 hours on 2 threads) can so be
+              made in pieces
 
 A run is a copy of the method's tutorial made by its own Allrun with the
 arguments of the form asked for, and an energy monitor of the suite's own
@@ -130,6 +137,9 @@ CASES = [
              Method("Riemann WCSPH + TLSPH",
                     "tutorials/riemannSphFoam/rollingTankBaffle", [],
                     coarse_end=0.3, frame="tank"),
+             Method("ISPH + TLSPH",
+                    "tutorials/isphTlsphFoam/rollingTankBaffle", [],
+                    coarse_end=0.3, frame="tank"),
          ]),
     Case("turekHronFSI2", "Turek-Hron FSI2 flag (10 periods and the"
          " start, 15 s)", [
@@ -144,6 +154,11 @@ CASES = [
     Case("sloshingTank", "sloshing tank at resonance (6 s)", [
         Method("ULPH", "tutorials/ulphPdFoam/sloshingTank", ["-dx", "0.02"],
                coarse_end=3, frame="tank"),
+        # At 0.02 m a contact-line particle of the ISPH water reaches
+        # 0.61 dx into the wall at 2.275 s: the coarse form is the
+        # tutorial's spacing, cut short
+        Method("ISPH", "tutorials/isphTlsphFoam/sloshingTank", [],
+               coarse_end=2, frame="tank"),
     ]),
 ]
 
@@ -154,12 +169,57 @@ def verdict(good):
 
 # * * * * * * * * * * * * * * * * The runs  * * * * * * * * * * * * * * * //
 
-def make_run(method, full, work, threads):
+#: The file of a run folder naming the form that made it (-continue)
+FORM_FILE = "stabilityForm"
+
+
+def run_form(method, full):
+    """The Allrun arguments and end time of a method's run in a form"""
+    return {"tutorial": method.tutorial,
+            "args": method.full if full else method.coarse,
+            "end": None if full else method.coarse_end}
+
+
+def continue_run(case, env):
+    """Continues a run from its latest written time with the solver of its
+    controlDict; returns (exit code, wall seconds). A run that reached its
+    end time is left as it is (exit code 0, 0 s)"""
+    try:
+        cost = run_cost(case)
+        end = float(lookup(read_dictionary(case, "system/controlDict"),
+                           "endTime"))
+        if cost["completed"] and abs(cost["time"] - end) < 1e-9:
+            return 0, 0.0
+    except Exception:
+        pass
+    solver = lookup(read_dictionary(case, "system/controlDict"),
+                    "application")
+    put_entry(case, "system/controlDict", "startFrom", "latestTime")
+    n = sum(1 for f in os.listdir(case)
+            if f.startswith("log.%s.continued" % solver))
+    start = time.time()
+    with open(os.path.join(case, "log.%s.continued%d" % (solver, n)),
+              "w") as log:
+        code = subprocess.run([solver], cwd=case, env=env, stdout=log,
+                              stderr=subprocess.STDOUT).returncode
+    return code, time.time() - start
+
+
+def make_run(method, full, work, threads, resume=False):
     """A clean copy of the tutorial run by its Allrun; returns (case, Allrun
-    exit code, wall seconds)"""
+    exit code, wall seconds). resume: a copy already made by the same form
+    is continued (continue_run) instead"""
     tutorial = os.path.join(PROJECT, method.tutorial)
     case = os.path.join(work, os.path.basename(method.tutorial) + "-"
                         + "".join(c for c in method.name if c.isalnum()))
+    env = dict(os.environ, OMP_NUM_THREADS=str(threads),
+               MESHLESS_PROJECT=PROJECT)
+    form = repr(run_form(method, full))
+    formFile = os.path.join(case, FORM_FILE)
+    if resume and os.path.isfile(formFile) \
+            and open(formFile).read().strip() == form:
+        code, seconds = continue_run(case, env)
+        return case, code, seconds
     if os.path.isdir(case):
         shutil.rmtree(case)
     copy_case(tutorial, case, stored_results=False)
@@ -175,8 +235,8 @@ def make_run(method, full, work, threads):
         # The tutorials' own '-end' writes system/runTime, which wins
         if open(os.path.join(case, "Allrun")).read().find("-end)") >= 0:
             args = args + ["-end", "%g" % end]
-    env = dict(os.environ, OMP_NUM_THREADS=str(threads),
-               MESHLESS_PROJECT=PROJECT)
+    with open(formFile, "w") as f:
+        f.write(form + "\n")
     start = time.time()
     with open(os.path.join(case, "Allrun.log"), "w") as log:
         code = subprocess.run(["./Allrun"] + args, cwd=case, env=env,
@@ -407,8 +467,9 @@ INVARIANTS = ("reached", "finite", "particles", "depth", "energy", "splash")
 
 
 def main(argv, name="stability", after=None):
-    """The suite; after(work) (optional: more checks on the runs, before
-    the work folder goes) returns (passed, failed) to add to the count"""
+    """The suite; after(work, threads) (optional: more checks on the runs,
+    before the work folder goes) returns (passed, failed) to add to the
+    count"""
     parser = argparse.ArgumentParser(prog="Allrun", add_help=False,
                                      allow_abbrev=False)
     parser.add_argument("-full", action="store_true")
@@ -417,6 +478,7 @@ def main(argv, name="stability", after=None):
     parser.add_argument("-method", action="append", default=[])
     parser.add_argument("-threads", type=int, default=2)
     parser.add_argument("-work")
+    parser.add_argument("-continue", dest="resume", action="store_true")
     try:
         opts = parser.parse_args(argv)
     except SystemExit:
@@ -425,6 +487,10 @@ def main(argv, name="stability", after=None):
     full, keep = opts.full, opts.keep
     cases, methods, threads = opts.case, opts.method, opts.threads
     work = os.path.abspath(opts.work) if opts.work else None
+    if opts.resume and work is None:
+        print("-continue needs -work DIR: the folder of the runs to"
+              " continue")
+        return 2
     known = {c.name for c in CASES}
     for c in cases:
         if c not in known:
@@ -444,7 +510,8 @@ def main(argv, name="stability", after=None):
             for method in case.methods:
                 if methods and method.name not in methods:
                     continue
-                path, code, seconds = make_run(method, full, work, threads)
+                path, code, seconds = make_run(method, full, work, threads,
+                                               opts.resume)
                 try:
                     inv, cost = invariants(path)
                 except Exception as e:
@@ -467,7 +534,7 @@ def main(argv, name="stability", after=None):
                               for k in INVARIANTS)))
                 sys.stdout.flush()
         if after is not None:
-            more = after(work)
+            more = after(work, threads)
             passed += more[0]
             failed += more[1]
     finally:

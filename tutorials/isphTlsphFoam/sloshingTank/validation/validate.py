@@ -21,7 +21,7 @@ from sloshingValidation import validate  # noqa: E402
 
 SETUP = ("projection ISPH, cubic spline h = 1.2 dx, the Poisson equation "
          "by BiCGStab to 1e-8 with the walls' own rows (Lind et al. 2012), "
-         "density term 0.05 on compressed particles, wall contact 1 dx, the "
+         "the divergence-free source alone, wall contact 1 dx, the "
          "sum form of the gradient near the surface, Fickian shifting 0.1, "
          "mu = 1e-3 Pa s, maxCo 0.1, no-slip ghost walls")
 
