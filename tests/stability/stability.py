@@ -9,7 +9,8 @@ Usage: tests/stability/Allrun [-full] [-case C] [-method M] [-threads N]
               the cases too costly for the CI budget cut short (the
               table says where)
   -full       the tutorials' own spacings and end times (hours); writes
-              tests/stability/result.md
+              tests/stability/result.md when every case and method ran
+              (not with -case or -method)
   -case C     only case C (repeatable)
   -method M   only method M (repeatable)
   -threads N  OpenMP threads of every run (default 2)
@@ -556,7 +557,7 @@ def main(argv, name="stability", after=None):
                         cost["threads"], "" if cost["threads"] == 1 else "s"))
     print()
     print("\n".join(lines))
-    if full:
+    if full and not cases and not methods:
         with open(os.path.join(HERE, "result.md"), "w") as f:
             f.write("# Stability suite, full form\n\nCommand:"
                     " `tests/stability/Allrun -full`\n\n%s\n\nEnergy:"
