@@ -155,9 +155,11 @@ CASES = [
     Case("sloshingTank", "sloshing tank at resonance (6 s)", [
         Method("ULPH", "tutorials/ulphPdFoam/sloshingTank", ["-dx", "0.02"],
                coarse_end=3, frame="tank"),
-        # At 0.02 m a contact-line particle of the ISPH water reaches
-        # 0.61 dx into the wall at 2.275 s: the coarse form is the
-        # tutorial's spacing, cut short
+        # The coarse form is the tutorial's spacing, cut short: the tank,
+        # 1.73 m wide, is 86.5 spacings of 0.02 m, and seedParticles puts
+        # the water's last column on the right wall's face (x = 1.73 m);
+        # from there an ISPH contact-line particle is 0.61 dx deep at
+        # 2.275 s
         Method("ISPH", "tutorials/isphTlsphFoam/sloshingTank", [],
                coarse_end=2, frame="tank"),
     ]),
