@@ -526,12 +526,13 @@ def main(argv, name="stability", after=None):
                 missed = [k for k in INVARIANTS if not inv[k][1]]
                 failed += len(missed)
                 passed += len(INVARIANTS) - len(missed)
-                form = " ".join(method.full if full else method.coarse)
+                form = " ".join(method.full if full else method.coarse) \
+                    or "default"
                 if not full and method.coarse_end is not None:
                     form += " to %g s" % method.coarse_end
-                rows.append((case, method, inv, cost, form or "default"))
+                rows.append((case, method, inv, cost, form))
                 print("%s, %s (%s): %s" % (
-                    case.name, method.name, form or "default",
+                    case.name, method.name, form,
                     "; ".join("%s %s: %s" % (k, verdict(inv[k][1]),
                                              inv[k][0])
                               for k in INVARIANTS)))
