@@ -14,8 +14,13 @@ written, the suite run again with -continue: it continues the run from
 its latest time (not a new Allrun), the run reaches 0.6 s in two runs
 (their runCost files), and its particles at 0.6 s are those of the
 uninterrupted run (1e-9 m: the restart is exact); a third -continue
-leaves the finished run as it is."""
+leaves the finished run as it is.
+
+And the depth in a wall (stability.wall_depth) on a wall with an open
+end, as the dam break's tank without a lid: a particle beside the end,
+past the wall's top, is in no wall; one inside it is as deep as it is."""
 import glob
+import math
 import os
 import signal
 import subprocess
@@ -36,6 +41,56 @@ CONTINUED = ("damBreak", "ULPH")
 STOP_AT = 0.2
 
 
+def open_end_wall(dx):
+    """A wall as seedParticles lays it (4 layers, normals into the wall,
+    wallDistance to its face) along the face x = 0 for y < H = 10 dx, and
+    the layers that wrap round its open end: normals and distances from
+    the end's edge (0, H)"""
+    H = 10 * dx
+    points, normals, distances = [], [], []
+    for k in range(4):
+        xs = (k + 0.5) * dx
+        for j in range(14):
+            ys = (j + 0.5) * dx
+            if ys < H:
+                n, dist = (1.0, 0.0), xs
+            else:
+                dist = math.hypot(xs, ys - H)
+                n = (xs / dist, (ys - H) / dist)
+            points.append((xs, ys, 0.0))
+            normals.append((n[0], n[1], 0.0))
+            distances.append(dist)
+    return {"positions": points, "normal": normals,
+            "wallDistance": distances}
+
+
+def depth_checks(t):
+    """stability.wall_depth on a wall with an open end: a particle beside
+    the end, past the wall's top, is in no wall (it was 0.8 dx deep for
+    the Riemann dam break's full form, which has no lid)"""
+    dx = 0.001
+    wall = open_end_wall(dx)
+    cases = [("beside the open end, 0.9 dx above the top", (-0.3, 10.9),
+              None),
+             ("0.7 dx inside the wall", (0.7, 5.0), 0.7),
+             ("0.3 dx in front of the face", (-0.3, 5.0), -0.3),
+             ("0.4 dx inside the wrapped end", (0.4, 10.3), "inside")]
+    for what, (a, b), expected in cases:
+        got = stability.wall_depth([(a * dx, b * dx, 0.0)], wall, dx,
+                                   4 * dx) / dx
+        if expected is None:
+            t.check("wall depth of a particle %s: %.2f dx <= 0" % (what, got),
+                    got <= 0)
+        elif expected == "inside":
+            # The wrapped end's faces are the plane through the edge
+            # across each normal: 0.50 dx here
+            t.check("wall depth of a particle %s: %.2f dx > 0" % (what, got),
+                    got > 0)
+        else:
+            t.check("wall depth of a particle %s: %.3f dx (%.1f)"
+                    % (what, got, expected), abs(got - expected) < 1e-9)
+
+
 def reader_checks(work, threads):
     t = CaseTest("stabilitySuite")
     runs = glob.glob(os.path.join(work, "obstacleFracture-*"))
@@ -54,6 +109,7 @@ def reader_checks(work, threads):
         t.check("obstacleFracture: the reader sees the obstacle's damage,"
                 " plasticStrain, U", wanted <= seen, str(sorted(seen)))
     continue_checks(t, work, threads)
+    depth_checks(t)
     return t.passed, t.failed
 
 

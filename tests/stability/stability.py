@@ -296,27 +296,63 @@ def finite(cloud):
     return None
 
 
+def lattice_axes(points, dx):
+    """The axes of the lattice a wall's particles lie on (a moving tank's
+    turn with it): the direction from its first particle to its nearest
+    other one, and the perpendicular; None with fewer than two"""
+    if len(points) < 2:
+        return None
+    p = points[0]
+    best, e = math.inf, None
+    for q in points[1:]:
+        r = math.hypot(q[0] - p[0], q[1] - p[1])
+        if 0 < r < best:
+            best, e = r, ((q[0] - p[0]) / r, (q[1] - p[1]) / r)
+        if best < 1.01 * dx:
+            break
+    return e, (-e[1], e[0])
+
+
 def wall_depth(fluid, wall, dxw, reach):
     """Deepest fluid particle inside a ghost wall [m]: of the wall particles
     within reach that lie along their own normal from it (the offset
     across the normal within half the wall's spacing dxw), the face is the
     wall particle's wallDistance in front of it along its normal (which
-    points into the wall); the deepest of those (the wall the union of its
-    particles' lattice cells, so that corners count right both ways)"""
+    points into the wall); the deepest of those. A depth above zero counts
+    only for a particle inside the wall, the union of its particles'
+    lattice cells: at the open end of a wall (a tank without a lid) the
+    particles that wrap round the end have normals from the end's edge,
+    and the plane through the edge across such a normal cuts the open air
+    beside the end, where a particle that rises past the wall's top is in
+    no wall's cell"""
     x = wall["positions"]
     n, d = wall.get("normal"), wall.get("wallDistance")
     if n is None or d is None:
         return -math.inf
     grid = Grid(x, reach)
+    axes = lattice_axes(x, dxw)
+    half = 0.5 * dxw * (1 + 1e-9)
+
+    def inside(p):
+        if axes is None:
+            return True
+        for s in grid.near(p):
+            rx, ry = x[s][0] - p[0], x[s][1] - p[1]
+            if all(abs(rx * e[0] + ry * e[1]) <= half for e in axes):
+                return True
+        return False
+
     deepest = -math.inf
     for p in fluid:
         for s in grid.near(p):
             rx, ry = x[s][0] - p[0], x[s][1] - p[1]
             along = rx * n[s][0] + ry * n[s][1]
             if math.hypot(rx - along * n[s][0], ry - along * n[s][1]) \
-                    > 0.5 * dxw * (1 + 1e-9):
+                    > half:
                 continue
-            deepest = max(deepest, d[s] - along)
+            depth = d[s] - along
+            if depth > deepest and (depth <= 0 or inside(p)):
+                deepest = depth
     return deepest
 
 
