@@ -13,8 +13,8 @@ folder, its Allrun stopped (SIGTERM to its process group) once 0.2 s is
 written, the suite run again with -continue: it continues the run from
 its latest time (not a new Allrun), the run reaches 0.6 s in two runs
 (their runCost files), and its particles at 0.6 s are those of the
-uninterrupted run (1e-9 m: the restart is exact); a third -continue
-leaves the finished run as it is.
+uninterrupted run (the same ids, 1e-9 m: the restart is exact); a third
+-continue leaves the finished run as it is.
 
 And the depth in a wall (stability.wall_depth) on a wall with an open
 end, as the dam break's tank without a lid: a particle beside the end,
@@ -22,6 +22,7 @@ past the wall's top, is in no wall; one inside it is as deep as it is."""
 import glob
 import math
 import os
+import shutil
 import signal
 import subprocess
 import sys
@@ -74,7 +75,10 @@ def depth_checks(t):
               None),
              ("0.7 dx inside the wall", (0.7, 5.0), 0.7),
              ("0.3 dx in front of the face", (-0.3, 5.0), -0.3),
-             ("0.4 dx inside the wrapped end", (0.4, 10.3), "inside")]
+             ("gone through the wall, 0.3 dx past its last layer",
+              (4.3, 5.2), 4.3),
+             ("0.4 dx inside the wrapped end", (0.4, 10.3), "inside"),
+             ("above the wrapped end", (0.5, 14.8), None)]
     for what, (a, b), expected in cases:
         got = stability.wall_depth([(a * dx, b * dx, 0.0)], wall, dx,
                                    4 * dx) / dx
@@ -129,19 +133,27 @@ def continue_checks(t, work, threads):
     if len(whole) != 1:
         return
     again = os.path.join(work, "continued")
-    os.makedirs(again, exist_ok=True)
+    shutil.rmtree(again, ignore_errors=True)
+    os.makedirs(again)
     case = os.path.join(again, os.path.basename(whole[0]))
-    proc = subprocess.Popen(suite(again, threads), stdout=subprocess.DEVNULL,
+    proc = subprocess.Popen(suite(again, threads)[:-1],
+                            stdout=subprocess.DEVNULL,
                             stderr=subprocess.STDOUT, start_new_session=True)
     stopped = None
-    while proc.poll() is None:
-        done = [v for v, _ in times(case)] if os.path.isdir(case) else []
-        if done and done[-1] >= STOP_AT - 1e-9:
-            stopped = done[-1]
+    try:
+        while proc.poll() is None:
+            done = [v for v, _ in times(case)] if os.path.isdir(case) \
+                else []
+            if done and done[-1] >= STOP_AT - 1e-9:
+                stopped = done[-1]
+                break
+            time.sleep(0.05)
+    finally:
+        try:
             os.killpg(proc.pid, signal.SIGTERM)
-            break
-        time.sleep(0.05)
-    proc.wait()
+        except ProcessLookupError:
+            pass
+        proc.wait()
     t.check("-continue: the first run stopped at %s s, before its end"
             % stopped, stopped is not None and stopped < 0.6 - 1e-9)
     if stopped is None:
@@ -165,19 +177,16 @@ def continue_checks(t, work, threads):
         t.check("-continue: the continued run reached %s s" % last, False,
                 "last time %s" % times(case)[-1][1])
         return
-    diff = 0.0
-    for body in ("water",):
-        a, b = read_cloud(whole[0], last, body), read_cloud(case, last, body)
-        pos = dict(zip(a["id"], a["positions"]))
-        for i, p in zip(b["id"], b["positions"]):
-            q = pos.get(i)
-            if q is None:
-                diff = float("inf")
-                break
-            diff = max(diff, max(abs(p[c] - q[c]) for c in range(3)))
-    t.check("-continue: its water at %s s is the uninterrupted run's"
-            " (largest difference %.3g m < 1e-9)" % (last, diff),
-            diff < 1e-9)
+    a, b = read_cloud(whole[0], last, "water"), read_cloud(case, last,
+                                                          "water")
+    pos = dict(zip(a["id"], a["positions"]))
+    same = sorted(a["id"]) == sorted(b["id"]) and len(pos) > 0
+    diff = max((max(abs(p[c] - pos[i][c]) for c in range(3))
+                for i, p in zip(b["id"], b["positions"]) if i in pos),
+               default=float("inf"))
+    t.check("-continue: its water at %s s is the uninterrupted run's: the"
+            " same %d particles, largest difference %.3g m < 1e-9"
+            % (last, len(b["id"]), diff), same and diff < 1e-9)
     before = len(glob.glob(os.path.join(case, "log.*.continued*")))
     out = subprocess.run(suite(again, threads), capture_output=True,
                          text=True)

@@ -21,8 +21,10 @@ Usage: tests/stability/Allrun [-full] [-case C] [-method M] [-threads N]
               startFrom latestTime; its wall time adds up over the
               restarts), or only checked when it reached its end; the
               others are made afresh. The full form's longest run (the
-              ISPH rolling tank, about 4.5 hours on 2 threads) can so be
-              made in pieces
+              ISPH rolling tank, hours) can so be made in pieces. Each
+              run folder lists the builds that made it (stabilityBuilds:
+              SHA-1 of the library and the solver); the table says when a
+              run was made by more than one
 
 A run is a copy of the method's tutorial made by its own Allrun with the
 arguments of the form asked for, and an energy monitor of the suite's own
@@ -62,6 +64,7 @@ Adding a method to a case, or a case, is one entry in CASES.
 """
 import argparse
 import collections
+import hashlib
 import math
 import os
 import shutil
@@ -78,7 +81,7 @@ sys.path.insert(0, os.path.join(PROJECT, "tests", "lib"))
 from foamCloud import read_cloud, times  # noqa: E402
 from caseTest import copy_case  # noqa: E402
 from foamDict import lookup, put_entry, read_dictionary  # noqa: E402
-from foamMonitor import monitor_rows, run_cost  # noqa: E402
+from foamMonitor import monitor_rows, run_cost, run_costs  # noqa: E402
 from fsiChecks import largest_rise  # noqa: E402
 
 #: The energy check's bound: the largest rise of the total above its lowest
@@ -183,10 +186,44 @@ def run_form(method, full):
             "end": None if full else method.coarse_end}
 
 
+#: The file of a run folder listing the builds that made it, one line a
+#: run or continuation
+BUILD_FILE = "stabilityBuilds"
+
+
+def build_id(case):
+    """The build a run is made with: the first 12 hexadecimal digits of the
+    SHA-1 of the project's library and of the case's solver"""
+    digest = hashlib.sha1()
+    solver = lookup(read_dictionary(case, "system/controlDict"),
+                    "application", "")
+    for f in (os.path.join(PROJECT, "platforms", "lib", "libmeshless.so"),
+              os.path.join(PROJECT, "platforms", "bin", solver)):
+        if os.path.isfile(f):
+            with open(f, "rb") as b:
+                digest.update(b.read())
+    return digest.hexdigest()[:12]
+
+
+def note_build(case, how):
+    with open(os.path.join(case, BUILD_FILE), "a") as f:
+        f.write("%s %s\n" % (how, build_id(case)))
+
+
+def builds(case):
+    """The distinct builds that made a run (BUILD_FILE)"""
+    try:
+        with open(os.path.join(case, BUILD_FILE)) as f:
+            return sorted({line.split()[-1] for line in f if line.split()})
+    except OSError:
+        return []
+
+
 def continue_run(case, env):
     """Continues a run from its latest written time with the solver of its
-    controlDict; returns (exit code, wall seconds). A run that reached its
-    end time is left as it is (exit code 0, 0 s)"""
+    controlDict, in the project's environment; returns (exit code, wall
+    seconds). A run that reached its end time is left as it is (exit code
+    0, 0 s)"""
     try:
         cost = run_cost(case)
         end = float(lookup(read_dictionary(case, "system/controlDict"),
@@ -195,17 +232,24 @@ def continue_run(case, env):
             return 0, 0.0
     except Exception:
         pass
-    solver = lookup(read_dictionary(case, "system/controlDict"),
-                    "application")
-    put_entry(case, "system/controlDict", "startFrom", "latestTime")
-    n = sum(1 for f in os.listdir(case)
-            if f.startswith("log.%s.continued" % solver))
-    start = time.time()
-    with open(os.path.join(case, "log.%s.continued%d" % (solver, n)),
-              "w") as log:
-        code = subprocess.run([solver], cwd=case, env=env, stdout=log,
-                              stderr=subprocess.STDOUT).returncode
-    return code, time.time() - start
+    try:
+        solver = lookup(read_dictionary(case, "system/controlDict"),
+                        "application")
+        put_entry(case, "system/controlDict", "startFrom", "latestTime")
+        n = sum(1 for f in os.listdir(case)
+                if f.startswith("log.%s.continued" % solver))
+        note_build(case, "continued")
+        start = time.time()
+        with open(os.path.join(case, "log.%s.continued%d" % (solver, n)),
+                  "w") as log:
+            code = subprocess.run(
+                ["bash", "-c", '. "$MESHLESS_PROJECT/etc/bashrc" && exec'
+                 ' "$0"', solver], cwd=case, env=env, stdout=log,
+                stderr=subprocess.STDOUT).returncode
+        return code, time.time() - start
+    except Exception as e:
+        print("%s: not continued: %s" % (case, e))
+        return 1, 0.0
 
 
 def make_run(method, full, work, threads, resume=False):
@@ -219,8 +263,10 @@ def make_run(method, full, work, threads, resume=False):
                MESHLESS_PROJECT=PROJECT)
     form = repr(run_form(method, full))
     formFile = os.path.join(case, FORM_FILE)
+    # A run that reached its solver (a runCost file) made by this form
     if resume and os.path.isfile(formFile) \
-            and open(formFile).read().strip() == form:
+            and open(formFile).read().strip() == form \
+            and run_costs(case):
         code, seconds = continue_run(case, env)
         return case, code, seconds
     if os.path.isdir(case):
@@ -240,6 +286,7 @@ def make_run(method, full, work, threads, resume=False):
             args = args + ["-end", "%g" % end]
     with open(formFile, "w") as f:
         f.write(form + "\n")
+    note_build(case, "made")
     start = time.time()
     with open(os.path.join(case, "Allrun.log"), "w") as log:
         code = subprocess.run(["./Allrun"] + args, cwd=case, env=env,
@@ -298,19 +345,17 @@ def finite(cloud):
 
 def lattice_axes(points, dx):
     """The axes of the lattice a wall's particles lie on (a moving tank's
-    turn with it): the direction from its first particle to its nearest
-    other one, and the perpendicular; None with fewer than two"""
-    if len(points) < 2:
-        return None
-    p = points[0]
-    best, e = math.inf, None
-    for q in points[1:]:
-        r = math.hypot(q[0] - p[0], q[1] - p[1])
-        if 0 < r < best:
-            best, e = r, ((q[0] - p[0]) / r, (q[1] - p[1]) / r)
-        if best < 1.01 * dx:
-            break
-    return e, (-e[1], e[0])
+    turn with it): the direction between two of its particles one spacing
+    dx apart, and the perpendicular; the x and y axes when no two are"""
+    grid = Grid(points, 1.01 * dx)
+    for p in points[:100]:
+        for k in grid.near(p):
+            q = points[k]
+            r = math.hypot(q[0] - p[0], q[1] - p[1])
+            if abs(r - dx) < 0.01 * dx:
+                e = ((q[0] - p[0]) / r, (q[1] - p[1]) / r)
+                return e, (-e[1], e[0])
+    return (1.0, 0.0), (0.0, 1.0)
 
 
 def wall_depth(fluid, wall, dxw, reach):
@@ -320,11 +365,12 @@ def wall_depth(fluid, wall, dxw, reach):
     wall particle's wallDistance in front of it along its normal (which
     points into the wall); the deepest of those. A depth above zero counts
     only for a particle inside the wall, the union of its particles'
-    lattice cells: at the open end of a wall (a tank without a lid) the
-    particles that wrap round the end have normals from the end's edge,
-    and the plane through the edge across such a normal cuts the open air
-    beside the end, where a particle that rises past the wall's top is in
-    no wall's cell"""
+    lattice cells, or behind a wall particle of a plane face (gone
+    through the wall): at the open end of a wall (a tank without a lid)
+    the particles that wrap round the end have normals from the end's
+    edge, and the plane through the edge across such a normal cuts the
+    open air beside the end, where a particle that rises past the wall's
+    top is in no wall's cell"""
     x = wall["positions"]
     n, d = wall.get("normal"), wall.get("wallDistance")
     if n is None or d is None:
@@ -333,9 +379,13 @@ def wall_depth(fluid, wall, dxw, reach):
     axes = lattice_axes(x, dxw)
     half = 0.5 * dxw * (1 + 1e-9)
 
+    def flat(s):
+        """Whether the wall particle's normal is a lattice axis: its face
+        a plane, not an edge"""
+        return max(abs(n[s][0] * e[0] + n[s][1] * e[1]) for e in axes) \
+            > 1 - 1e-6
+
     def inside(p):
-        if axes is None:
-            return True
         for s in grid.near(p):
             rx, ry = x[s][0] - p[0], x[s][1] - p[1]
             if all(abs(rx * e[0] + ry * e[1]) <= half for e in axes):
@@ -351,7 +401,8 @@ def wall_depth(fluid, wall, dxw, reach):
                     > half:
                 continue
             depth = d[s] - along
-            if depth > deepest and (depth <= 0 or inside(p)):
+            if depth > deepest and (depth <= 0 or inside(p)
+                                    or (along < 0 and flat(s))):
                 deepest = depth
     return deepest
 
@@ -566,6 +617,8 @@ def main(argv, name="stability", after=None):
                     or "default"
                 if not full and method.coarse_end is not None:
                     form += " to %g s" % method.coarse_end
+                if len(builds(path)) > 1:
+                    form += " (%d builds)" % len(builds(path))
                 rows.append((case, method, inv, cost, form))
                 print("%s, %s (%s): %s" % (
                     case.name, method.name, form,
