@@ -34,7 +34,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(HERE), "lib"))
 import stability  # noqa: E402
 from caseTest import CaseTest  # noqa: E402
 from foamCloud import read_cloud, read_positions, times  # noqa: E402
-from foamMonitor import run_costs  # noqa: E402
+from foamMonitor import run_cost  # noqa: E402
 from readClouds import read_clouds  # noqa: E402
 
 #: The run -continue is tried on, and where its Allrun is stopped [s]
@@ -117,11 +117,12 @@ def reader_checks(work, threads):
     return t.passed, t.failed
 
 
-def suite(work, threads):
-    """The suite's command on one case and method, in work, -continue"""
+def suite(work, threads, resume=True):
+    """The suite's command on one case and method, in work (-continue
+    when resume)"""
     return [sys.executable, stability.__file__, "-case", CONTINUED[0],
             "-method", CONTINUED[1], "-work", work, "-threads",
-            str(threads), "-continue"]
+            str(threads)] + (["-continue"] if resume else [])
 
 
 def continue_checks(t, work, threads):
@@ -136,7 +137,7 @@ def continue_checks(t, work, threads):
     shutil.rmtree(again, ignore_errors=True)
     os.makedirs(again)
     case = os.path.join(again, os.path.basename(whole[0]))
-    proc = subprocess.Popen(suite(again, threads)[:-1],
+    proc = subprocess.Popen(suite(again, threads, resume=False),
                             stdout=subprocess.DEVNULL,
                             stderr=subprocess.STDOUT, start_new_session=True)
     stopped = None
@@ -166,12 +167,10 @@ def continue_checks(t, work, threads):
             len(logs) == 1 and os.path.isfile(os.path.join(case,
                                                            "Allrun.log")),
             out.stdout[-2000:])
-    costs = run_costs(case)
+    cost = run_cost(case)
     t.check("-continue: two runs (runCost files: %d), the last one"
-            " complete" % len(costs), len(costs) == 2
-            and costs[-1].get("completed", "false") in ("true", "yes", "on",
-                                                         "1"),
-            str(costs[-1] if costs else None))
+            " complete" % cost["runs"], cost["runs"] == 2
+            and cost["completed"], str(cost))
     last = times(whole[0])[-1][1]
     if times(case)[-1][1] != last:
         t.check("-continue: the continued run reached %s s" % last, False,

@@ -219,16 +219,21 @@ def builds(case):
         return []
 
 
+def end_reached(case, cost):
+    """The case's endTime and whether its runs (cost: run_cost) reached it
+    with a completed run"""
+    end = float(lookup(read_dictionary(case, "system/controlDict"),
+                       "endTime"))
+    return end, cost["completed"] and abs(cost["time"] - end) < 1e-9
+
+
 def continue_run(case, env):
     """Continues a run from its latest written time with the solver of its
     controlDict, in the project's environment; returns (exit code, wall
     seconds). A run that reached its end time is left as it is (exit code
     0, 0 s)"""
     try:
-        cost = run_cost(case)
-        end = float(lookup(read_dictionary(case, "system/controlDict"),
-                           "endTime"))
-        if cost["completed"] and abs(cost["time"] - end) < 1e-9:
+        if end_reached(case, run_cost(case))[1]:
             return 0, 0.0
     except Exception:
         pass
@@ -261,7 +266,8 @@ def make_run(method, full, work, threads, resume=False):
                         + "".join(c for c in method.name if c.isalnum()))
     env = dict(os.environ, OMP_NUM_THREADS=str(threads),
                MESHLESS_PROJECT=PROJECT)
-    form = repr(run_form(method, full))
+    made = run_form(method, full)
+    form = repr(made)
     formFile = os.path.join(case, FORM_FILE)
     # A run that reached its solver (a runCost file) made by this form
     if resume and os.path.isfile(formFile) \
@@ -277,8 +283,7 @@ def make_run(method, full, work, threads, resume=False):
         "frame %s; " % method.frame if method.frame else "")
     put_entry(case, "constant/particleProperties",
               "monitors/stabilityEnergy", monitor)
-    args = method.full if full else method.coarse
-    end = None if full else method.coarse_end
+    args, end = list(made["args"]), made["end"]
     if end is not None:
         put_entry(case, "system/controlDict", "endTime", "%g" % end)
         # The tutorials' own '-end' writes system/runTime, which wins
@@ -477,10 +482,8 @@ def invariants(case):
     series = times(case)
     out = {}
 
-    end = float(lookup(read_dictionary(case, "system/controlDict"),
-                       "endTime"))
-    out["reached"] = ("%g of %g s" % (cost["time"], end),
-                      cost["completed"] and abs(cost["time"] - end) < 1e-9)
+    end, reached = end_reached(case, cost)
+    out["reached"] = ("%g of %g s" % (cost["time"], end), reached)
 
     counts = open_counts(case, bodies)
     n0, lost, bad, deepest, splash = {}, None, None, -math.inf, 0.0
@@ -613,12 +616,13 @@ def main(argv, name="stability", after=None):
                 missed = [k for k in INVARIANTS if not inv[k][1]]
                 failed += len(missed)
                 passed += len(INVARIANTS) - len(missed)
-                form = " ".join(method.full if full else method.coarse) \
-                    or "default"
-                if not full and method.coarse_end is not None:
-                    form += " to %g s" % method.coarse_end
-                if len(builds(path)) > 1:
-                    form += " (%d builds)" % len(builds(path))
+                made = run_form(method, full)
+                form = " ".join(made["args"]) or "default"
+                if made["end"] is not None:
+                    form += " to %g s" % made["end"]
+                made_by = len(builds(path))
+                if made_by > 1:
+                    form += " (%d builds)" % made_by
                 rows.append((case, method, inv, cost, form))
                 print("%s, %s (%s): %s" % (
                     case.name, method.name, form,
