@@ -13,6 +13,7 @@ Description
 #include "smoothingKernel.H"
 #include "mathematicalConstants.H"
 #include <cmath>
+#include <vector>
 #include <random>
 
 using namespace Foam;
@@ -172,6 +173,32 @@ TEST_P(kernelTest, smoothAtTheCutOff)
     }
     const scalar tol = GetParam().type == "gaussian" ? 1e-3 : 1e-12;
     EXPECT_LT(std::abs(W->dWdr(rIn)), tol*maxSlope);
+}
+
+
+TEST_P(kernelTest, evaluateOfManyEqualsWAndDWdr)
+{
+    // The relations' geometry evaluates a particle's distances in one call:
+    // the same values as W and dWdr, to the bit, in and beyond the support
+    autoPtr<smoothingKernel> W = makeKernel(GetParam(), 0.02);
+    const scalar R = W->radius();
+    std::vector<double> r;
+    for (label k = 0; k <= 400; ++k) r.push_back(k*1.2*R/400);
+    r.push_back(R);
+    const label n = r.size();
+    std::vector<double> w(n, -1), dw(n, -1), wOnly(n, -1), dwOnly(n, -1);
+    W->evaluate(r.data(), n, w.data(), dw.data());
+    W->evaluate(r.data(), n, wOnly.data(), nullptr);
+    W->evaluate(r.data(), n, nullptr, dwOnly.data());
+    for (label k = 0; k < n; ++k)
+    {
+        EXPECT_EQ(w[k], W->W(r[k])) << r[k];
+        EXPECT_EQ(dw[k], W->dWdr(r[k])) << r[k];
+        EXPECT_EQ(wOnly[k], w[k]);
+        EXPECT_EQ(dwOnly[k], dw[k]);
+    }
+    EXPECT_EQ(w[n - 1], 0.0);
+    EXPECT_GT(w[0], 0.0);
 }
 
 

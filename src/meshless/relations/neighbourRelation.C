@@ -75,12 +75,13 @@ void Foam::meshless::neighbourRelation::geometryImpl()
     const bool val = cached_ & kernelValue;
     const bool grad = cached_ & kernelGradient;
     if (sep) { xij_.resize(size_t(np)*Dim); r_.resize(np); }
+    else rWork_.resize(np);
     if (val) w_.resize(np);
     if (grad) dw_.resize(np);
     double* d = xij_.data();
-    double* r = r_.data();
-    double* w = w_.data();
-    double* dw = dw_.data();
+    double* r = sep ? r_.data() : rWork_.data();
+    double* w = val ? w_.data() : nullptr;
+    double* dw = grad ? dw_.data() : nullptr;
 
     #pragma omp parallel for schedule(static) if (n > 64)
     for (label i = 0; i < n; ++i)
@@ -107,14 +108,20 @@ void Foam::meshless::neighbourRelation::geometryImpl()
                     s += dq[c]*dq[c];
                 }
             }
-            const double rq = std::sqrt(s);
+            r[q] = std::sqrt(s);
             if (sep)
             {
                 for (int c = 0; c < Dim; ++c) d[size_t(q)*Dim + c] = dq[c];
-                r[q] = rq;
             }
-            if (val) w[q] = W.W(rq);
-            if (grad) dw[q] = W.dWdr(rq);
+        }
+        if (val || grad)
+        {
+            const label p = off[i];
+            W.evaluate
+            (
+                r + p, off[i + 1] - p, w ? w + p : nullptr,
+                dw ? dw + p : nullptr
+            );
         }
     }
 }

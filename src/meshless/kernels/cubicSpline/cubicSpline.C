@@ -52,3 +52,15 @@ Foam::scalar Foam::meshless::cubicSpline::dfdq(const scalar q) const
     }
     return 0;
 }
+
+
+void Foam::meshless::cubicSpline::evaluate
+(
+    const double* r,
+    const label n,
+    double* w,
+    double* dw
+) const
+{
+    evaluateShape(*this, r, n, w, dw);
+}

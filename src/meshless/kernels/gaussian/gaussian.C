@@ -53,3 +53,15 @@ Foam::scalar Foam::meshless::gaussian::dfdq(const scalar q) const
 {
     return q < qMax_ ? -2*q*std::exp(-q*q) : 0;
 }
+
+
+void Foam::meshless::gaussian::evaluate
+(
+    const double* r,
+    const label n,
+    double* w,
+    double* dw
+) const
+{
+    evaluateShape(*this, r, n, w, dw);
+}

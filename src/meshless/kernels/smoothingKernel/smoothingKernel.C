@@ -24,7 +24,8 @@ Foam::meshless::smoothingKernel::smoothingKernel
 :
     dim_(dim),
     h_(0),
-    norm_(0)
+    norm_(0),
+    support_(0)
 {
     if (dim != 2 && dim != 3)
     {
@@ -60,4 +61,21 @@ Foam::meshless::smoothingKernel::smoothingKernel
 void Foam::meshless::smoothingKernel::setNormalisation(const scalar sigma)
 {
     norm_ = sigma/(dim_ == 2 ? h_*h_ : h_*h_*h_);
+    support_ = qMax();
+}
+
+
+void Foam::meshless::smoothingKernel::evaluate
+(
+    const double* r,
+    const label n,
+    double* w,
+    double* dw
+) const
+{
+    for (label i = 0; i < n; ++i)
+    {
+        if (w) w[i] = W(r[i]);
+        if (dw) dw[i] = dWdr(r[i]);
+    }
 }

@@ -45,3 +45,15 @@ Foam::scalar Foam::meshless::wendlandC2::dfdq(const scalar q) const
     const scalar a = 1 - 0.5*q;
     return -5*q*a*a*a;
 }
+
+
+void Foam::meshless::wendlandC2::evaluate
+(
+    const double* r,
+    const label n,
+    double* w,
+    double* dw
+) const
+{
+    evaluateShape(*this, r, n, w, dw);
+}
