@@ -17,6 +17,7 @@ Description
 #include "linearSolver.H"
 #include "eigenSolver.H"
 #include "testHelpers.H"
+#include "BoomerAMG.H"
 #include <Eigen/SparseLU>
 #include <cmath>
 #include <functional>
@@ -386,6 +387,82 @@ TEST(LinearSolver, SolverKeptAcrossSizesAndMatrices)
 }
 
 
+//- The grid system with its values scaled entry by entry by 1 + eps
+//  sin(k) (the same pattern), and its direct solution
+linearSystem perturbed(const linearSystem& s, const double eps)
+{
+    linearSystem p;
+    const label n = s.n();
+    const label nnz = s.A.rowStart()[n];
+    p.A.resize(n, nnz);
+    p.A.setSymmetric(false);
+    std::copy(s.A.rowStart(), s.A.rowStart() + n + 1, p.A.rowStart());
+    std::copy(s.A.columns(), s.A.columns() + nnz, p.A.columns());
+    std::vector<Eigen::Triplet<double>> triplets;
+    for (label r = 0; r < n; ++r)
+    {
+        for (label k = s.A.rowStart()[r]; k < s.A.rowStart()[r + 1]; ++k)
+        {
+            p.A.values()[k] = s.A.values()[k]*(1 + eps*std::sin(double(k)));
+            triplets.emplace_back(r, p.A.columns()[k], p.A.values()[k]);
+        }
+    }
+    p.b = s.b;
+    Eigen::SparseMatrix<double> direct(n, n);
+    direct.setFromTriplets(triplets.begin(), triplets.end());
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(direct);
+    const Eigen::VectorXd x =
+        lu.solve(Eigen::Map<const Eigen::VectorXd>(p.b.data(), n));
+    p.xDirect.assign(x.data(), x.data() + n);
+    return p;
+}
+
+
+TEST(LinearSolver, BoomerAMGKeepsTheHierarchyOfANearbyMatrix)
+{
+    // An iterated coupling re-solves a step with the same pattern and
+    // values moved slightly: the hierarchy is kept while the values moved
+    // by at most reuseHierarchy of the largest entry, and the solution is
+    // the new matrix's
+    const linearSystem s0 = perturbed(gridSystem(40, 0.5), 0);
+    const linearSystem near = perturbed(s0, 5e-4);
+    const linearSystem far = perturbed(s0, 1e-2);
+    ASSERT_GT(relativeDifference(near.xDirect, s0.xDirect), 1e-5);
+
+    for (const char* extra : {"", " reuseHierarchy 0;"})
+    {
+        SCOPED_TRACE(extra);
+        autoPtr<linearSolver> solver =
+            makeSolver(std::string("solver BoomerAMG; tolerance 1e-10;") + extra);
+        const BoomerAMG& amg = dynamic_cast<const BoomerAMG&>(*solver);
+        const bool keeps = std::string(extra).empty();
+        label setups = 0;
+        for (const linearSystem* s : {&s0, &near, &near, &far, &s0})
+        {
+            std::vector<double> x(s->n(), 0.0);
+            const linearSolver::performance p =
+                solver->solve(s->A, s->b.data(), x.data());
+            EXPECT_TRUE(p.converged);
+            EXPECT_LT(relativeDifference(x, s->xDirect), 1e-7);
+            // far and s0 differ by 1e-2 from the matrix before them
+            setups += (!keeps || s == &s0 || s == &far);
+            EXPECT_EQ(amg.hierarchySetups(), setups);
+        }
+    }
+
+    // Another pattern: set up again
+    autoPtr<linearSolver> solver = makeSolver("solver BoomerAMG;");
+    const BoomerAMG& amg = dynamic_cast<const BoomerAMG&>(*solver);
+    const linearSystem other = perturbed(gridSystem(41, 0.5), 0);
+    for (const linearSystem* s : {&s0, &other})
+    {
+        std::vector<double> x(s->n(), 0.0);
+        EXPECT_TRUE(solver->solve(s->A, s->b.data(), x.data()).converged);
+    }
+    EXPECT_EQ(amg.hierarchySetups(), 2);
+}
+
+
 TEST(LinearSolver, Defaults)
 {
     for (const char* name : {"CG", "BiCGStab", "BoomerAMG"})
@@ -453,6 +530,7 @@ TEST(LinearSolver, BadEntriesNameTheKeyword)
             {"'nonSymmetricSolver'", "GMRES", "BiCGSTAB"}
         },
         {"solver BoomerAMG; restart 0;", {"'restart'", "> 0"}},
+        {"solver BoomerAMG; reuseHierarchy -1;", {"'reuseHierarchy'"}},
     };
     for (const auto& c : cases)
     {

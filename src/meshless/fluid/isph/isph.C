@@ -233,6 +233,9 @@ Foam::meshless::bodyModels::isph::isph
     failure_(),
     solvedOnce_(false),
     solvedOnceSaved_(false),
+    pIterate_(),
+    solvedSinceSave_(false),
+    reSolve_(false),
     assemblyCost_(-1),
     solveCost_(-1),
     projectionCost_(-1)
@@ -799,9 +802,16 @@ void Foam::meshless::bodyModels::isph::advanceDim
     }
     {
         costAccounting::scope timer(costs, solveCost_);
+        // The initial guess: the pressure of the step's start, or of the
+        // last solve when re-solving the step
+        const bool guess = reSolve_;
         if (wallUnknowns_)
         {
             std::copy(p_.data(), p_.data() + n, pAll_.begin());
+            if (guess && pIterate_.size() == pAll_.size())
+            {
+                std::copy(pIterate_.begin(), pIterate_.end(), pAll_.begin());
+            }
             if (Pstream::parRun())
             {
                 solveDistributed(bAll_.data(), pAll_.data(), pAll_.size());
@@ -811,15 +821,25 @@ void Foam::meshless::bodyModels::isph::advanceDim
                 last_ = solver_->solve(A_, bAll_.data(), pAll_.data());
             }
             std::copy(pAll_.begin(), pAll_.begin() + n, p_.data());
-        }
-        else if (Pstream::parRun())
-        {
-            solveDistributed(rhs_.data(), p_.data(), n);
+            pIterate_.assign(pAll_.begin(), pAll_.end());
         }
         else
         {
-            last_ = solver_->solve(A_, rhs_.data(), p_.data());
+            if (guess && label(pIterate_.size()) == n)
+            {
+                std::copy(pIterate_.begin(), pIterate_.end(), p_.data());
+            }
+            if (Pstream::parRun())
+            {
+                solveDistributed(rhs_.data(), p_.data(), n);
+            }
+            else
+            {
+                last_ = solver_->solve(A_, rhs_.data(), p_.data());
+            }
+            pIterate_.assign(p_.data(), p_.data() + n);
         }
+        solvedSinceSave_ = true;
     }
 
     if (clipPressure_)
@@ -1055,6 +1075,8 @@ void Foam::meshless::bodyModels::isph::stateSaved()
 {
     pAllSaved_ = pAll_;
     solvedOnceSaved_ = solvedOnce_;
+    solvedSinceSave_ = false;
+    reSolve_ = false;
     pSolvedSaved_.resize(boundaries_.size());
     for (size_t k = 0; k < boundaries_.size(); ++k)
     {
@@ -1071,6 +1093,7 @@ void Foam::meshless::bodyModels::isph::restored()
     fluidModel::restored();
     pAll_ = pAllSaved_;
     solvedOnce_ = solvedOnceSaved_;
+    reSolve_ = solvedSinceSave_;
     for (size_t k = 0; k < boundaries_.size(); ++k)
     {
         particleSet& gs = boundaries_[k].ghosts->ghostBody().particles();

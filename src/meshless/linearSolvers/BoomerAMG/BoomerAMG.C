@@ -237,6 +237,18 @@ const krylovMethod BiCGSTAB
     [](HYPRE_Solver, const HYPRE_Int) {}
 };
 
+//- The preconditioner's set-up when the hierarchy is kept: none
+HYPRE_Int keptHierarchy
+(
+    HYPRE_Solver,
+    HYPRE_ParCSRMatrix,
+    HYPRE_ParVector,
+    HYPRE_ParVector
+)
+{
+    return 0;
+}
+
 } // End anonymous namespace
 
 
@@ -279,6 +291,20 @@ struct Foam::meshless::BoomerAMG::hypreObjects
 
     //- Krylov solvers' communicators
     MPI_Comm krylovComm[2] = {MPI_COMM_SELF, MPI_COMM_SELF};
+
+    //- The matrix the hierarchy was set up for: its row starts, global
+    //  columns and values, of this process's rows (hierarchySize < 0: none)
+    std::vector<label> hierarchyStart;
+    std::vector<HYPRE_BigInt> hierarchyColumns;
+    std::vector<double> hierarchyValues;
+    label hierarchySize = -1;
+    label hierarchyOffset = -1;
+    MPI_Comm hierarchyComm = MPI_COMM_SELF;
+
+    //- Krylov iterations of the solve that set the hierarchy up, and the
+    //  set-ups so far
+    label hierarchyIterations = 0;
+    label setups = 0;
 
 
     hypreObjects() = default;
@@ -362,6 +388,59 @@ struct Foam::meshless::BoomerAMG::hypreObjects
             check(HYPRE_GetError(), m.name);
         }
         return krylov[k];
+    }
+
+    //- Global column of entry k of M
+    static HYPRE_BigInt column(const sparseMatrix& M, const label k)
+    {
+        return M.distributed()
+          ? HYPRE_BigInt(M.globalColumn(M.columns()[k]))
+          : HYPRE_BigInt(M.columns()[k]);
+    }
+
+    //- Whether on every process M has the rows and pattern of the
+    //  hierarchy's matrix and values within tolerance*max|a| of its
+    //  (collective)
+    bool closeToHierarchy(const sparseMatrix& M, const scalar tolerance)
+    const
+    {
+        const label n = M.n();
+        bool close =
+            hierarchySize == n && hierarchyOffset == M.rowOffset()
+         && hierarchyComm == comm;
+        if (close)
+        {
+            const label* rs = M.rowStart();
+            const label nnz = rs[n];
+            close = label(hierarchyValues.size()) == nnz
+                && std::equal(rs, rs + n + 1, hierarchyStart.begin());
+            const double* v = M.values();
+            double change = 0;
+            double largest = 0;
+            for (label k = 0; close && k < nnz; ++k)
+            {
+                close = column(M, k) == hierarchyColumns[k];
+                change = std::max(change, std::abs(v[k] - hierarchyValues[k]));
+                largest = std::max(largest, std::abs(hierarchyValues[k]));
+            }
+            close = close && change <= tolerance*largest;
+        }
+        return !anyProcess(!close, comm);
+    }
+
+    //- Remember M as the matrix of the hierarchy set up
+    void keepHierarchy(const sparseMatrix& M)
+    {
+        const label n = M.n();
+        const label* rs = M.rowStart();
+        const label nnz = rs[n];
+        hierarchyStart.assign(rs, rs + n + 1);
+        hierarchyColumns.resize(nnz);
+        for (label k = 0; k < nnz; ++k) hierarchyColumns[k] = column(M, k);
+        hierarchyValues.assign(M.values(), M.values() + nnz);
+        hierarchySize = n;
+        hierarchyOffset = M.rowOffset();
+        hierarchyComm = comm;
     }
 
     //- A new IJ matrix of A (its pattern changes every step)
@@ -540,6 +619,10 @@ Foam::meshless::BoomerAMG::BoomerAMG(const dictionary& dict)
     (
         dict.found("restart") ? readPositiveLabel(dict, "restart") : 30
     ),
+    reuseHierarchy_
+    (
+        readNonNegativeOrDefault(dict, "reuseHierarchy", 1e-3)
+    ),
     hypre_(new hypreObjects),
     distributed_(false)
 {
@@ -596,6 +679,33 @@ Foam::meshless::linearSolver::performance Foam::meshless::BoomerAMG::solve
     const bool symmetric = A.symmetric();
     const krylovMethod& method = *h.method[symmetric ? 0 : 1];
     HYPRE_Solver solver = nullptr;
+    bool setUp = false;
+    bool kept = false;
+
+    // The Krylov solver, hypre's copies of A, b and x, and the hierarchy:
+    // of this matrix, or the last one's when A is close to its matrix
+    auto setUpSolve = [&](const label offset)
+    {
+        HYPRE_ClearAllErrors();
+        solver = h.solver(symmetric, n, offset, tolerance(), restart_);
+        kept = reuseHierarchy_ > 0 && h.closeToHierarchy(A, reuseHierarchy_);
+        h.setMatrix(A);
+        h.setVectors(b, x, n, offset);
+        method.setPrecond
+        (
+            solver,
+            HYPRE_BoomerAMGSolve,
+            kept ? keptHierarchy : HYPRE_BoomerAMGSetup,
+            h.amg
+        );
+        check(method.setup(solver, h.parA, h.parB, h.parX), method.name);
+        if (!kept)
+        {
+            h.keepHierarchy(A);
+            ++h.setups;
+        }
+        setUp = true;
+    };
 
     // A distributed system spans the processors: hypre's copies first, so
     // that the residuals are the whole system's
@@ -603,34 +713,17 @@ Foam::meshless::linearSolver::performance Foam::meshless::BoomerAMG::solve
     h.comm = distributed_ ? MPI_COMM_WORLD : MPI_COMM_SELF;
     if (distributed_)
     {
-        HYPRE_ClearAllErrors();
-        solver = h.solver
-        (
-            symmetric, n, A.rowOffset(), tolerance(), restart_
-        );
-        h.setMatrix(A);
-        h.setVectors(b, x, n, A.rowOffset());
-        check(method.setup(solver, h.parA, h.parB, h.parX), method.name);
+        setUpSolve(A.rowOffset());
     }
 
-    return run
+    const performance p = run
     (
         A, b, x,
         [&](const label maxIter)
         {
-            if (!solver)
-            {
-                // Set up once a solve: the hierarchy of this matrix
-                HYPRE_ClearAllErrors();
-                solver = h.solver(symmetric, n, 0, tolerance(), restart_);
-                h.setMatrix(A);
-                h.setVectors(b, x, n, 0);
-                check
-                (
-                    method.setup(solver, h.parA, h.parB, h.parX),
-                    method.name
-                );
-            }
+            // Set up once a solve
+            if (!solver) setUpSolve(0);
+
             // Again from the x reached (h.x) when called again
             method.setMaxIter(solver, maxIter);
             check(method.solve(solver, h.parA, h.parB, h.parX), method.name);
@@ -642,6 +735,23 @@ Foam::meshless::linearSolver::performance Foam::meshless::BoomerAMG::solve
             return label(iterations);
         }
     );
+
+    if (setUp && !kept)
+    {
+        h.hierarchyIterations = p.iterations;
+    }
+    else if (kept && p.iterations > 2*h.hierarchyIterations + 2)
+    {
+        // The kept hierarchy no longer serves: set up at the next solve
+        h.hierarchySize = -1;
+    }
+    return p;
+}
+
+
+Foam::label Foam::meshless::BoomerAMG::hierarchySetups() const
+{
+    return hypre_->setups;
 }
 
 
