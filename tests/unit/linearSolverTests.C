@@ -388,14 +388,15 @@ TEST(LinearSolver, SolverKeptAcrossSizesAndMatrices)
 
 
 //- The grid system with its values scaled entry by entry by 1 + eps
-//  sin(k) (the same pattern), and its direct solution
+//  sin(row + column) (the same pattern and symmetry), and its direct
+//  solution
 linearSystem perturbed(const linearSystem& s, const double eps)
 {
     linearSystem p;
     const label n = s.n();
     const label nnz = s.A.rowStart()[n];
     p.A.resize(n, nnz);
-    p.A.setSymmetric(false);
+    p.A.setSymmetric(s.A.symmetric());
     std::copy(s.A.rowStart(), s.A.rowStart() + n + 1, p.A.rowStart());
     std::copy(s.A.columns(), s.A.columns() + nnz, p.A.columns());
     std::vector<Eigen::Triplet<double>> triplets;
@@ -403,7 +404,10 @@ linearSystem perturbed(const linearSystem& s, const double eps)
     {
         for (label k = s.A.rowStart()[r]; k < s.A.rowStart()[r + 1]; ++k)
         {
-            p.A.values()[k] = s.A.values()[k]*(1 + eps*std::sin(double(k)));
+            // sin(row + column): a symmetric matrix stays symmetric
+            const label c = p.A.columns()[k];
+            p.A.values()[k] =
+                s.A.values()[k]*(1 + eps*std::sin(double(r + c)));
             triplets.emplace_back(r, p.A.columns()[k], p.A.values()[k]);
         }
     }
@@ -423,17 +427,21 @@ TEST(LinearSolver, BoomerAMGKeepsTheHierarchyOfANearbyMatrix)
     // An iterated coupling re-solves a step with the same pattern and
     // values moved slightly: the hierarchy is kept while the values moved
     // by at most reuseHierarchy of the largest entry, and the solution is
-    // the new matrix's
-    const linearSystem s0 = perturbed(gridSystem(40, 0.5), 0);
-    const linearSystem near = perturbed(s0, 5e-4);
-    const linearSystem far = perturbed(s0, 1e-2);
-    ASSERT_GT(relativeDifference(near.xDirect, s0.xDirect), 1e-5);
-
+    // the new matrix's; with PCG (symmetric) and GMRES
+    for (const double pe : {0.0, 0.5})
     for (const char* extra : {"", " reuseHierarchy 0;"})
     {
-        SCOPED_TRACE(extra);
-        autoPtr<linearSolver> solver =
-            makeSolver(std::string("solver BoomerAMG; tolerance 1e-10;") + extra);
+        SCOPED_TRACE(std::string(extra) + " Peclet " + std::to_string(pe));
+        const linearSystem s0 = perturbed(gridSystem(40, pe), 0);
+        const linearSystem near = perturbed(s0, 5e-4);
+        const linearSystem far = perturbed(s0, 1e-2);
+        ASSERT_EQ(near.A.symmetric(), pe == 0);
+        ASSERT_GT(relativeDifference(near.xDirect, s0.xDirect), 1e-5);
+
+        autoPtr<linearSolver> solver = makeSolver
+        (
+            std::string("solver BoomerAMG; tolerance 1e-10;") + extra
+        );
         const BoomerAMG& amg = dynamic_cast<const BoomerAMG&>(*solver);
         const bool keeps = std::string(extra).empty();
         label setups = 0;
@@ -453,12 +461,40 @@ TEST(LinearSolver, BoomerAMGKeepsTheHierarchyOfANearbyMatrix)
     // Another pattern: set up again
     autoPtr<linearSolver> solver = makeSolver("solver BoomerAMG;");
     const BoomerAMG& amg = dynamic_cast<const BoomerAMG&>(*solver);
+    const linearSystem s0 = perturbed(gridSystem(40, 0.5), 0);
     const linearSystem other = perturbed(gridSystem(41, 0.5), 0);
     for (const linearSystem* s : {&s0, &other})
     {
         std::vector<double> x(s->n(), 0.0);
         EXPECT_TRUE(solver->solve(s->A, s->b.data(), x.data()).converged);
     }
+    EXPECT_EQ(amg.hierarchySetups(), 2);
+}
+
+
+TEST(LinearSolver, BoomerAMGSetsUpAgainWhenAKeptHierarchyFails)
+{
+    // A kept hierarchy's solve that stops short of the tolerance goes on
+    // from the x reached with the new matrix's own hierarchy (maxIter 3:
+    // neither converges, 3 iterations each)
+    const linearSystem s0 = perturbed(gridSystem(40, 0.5), 0);
+    const linearSystem near = perturbed(s0, 5e-4);
+    autoPtr<linearSolver> solver =
+        makeSolver("solver BoomerAMG; tolerance 1e-12; maxIter 3;");
+    const BoomerAMG& amg = dynamic_cast<const BoomerAMG&>(*solver);
+
+    std::vector<double> x(s0.n(), 0.0);
+    linearSolver::performance p = solver->solve(s0.A, s0.b.data(), x.data());
+    EXPECT_FALSE(p.converged);
+    EXPECT_EQ(p.iterations, 3);
+    EXPECT_EQ(amg.hierarchySetups(), 1);
+
+    std::fill(x.begin(), x.end(), 0.0);
+    p = solver->solve(near.A, near.b.data(), x.data());
+    EXPECT_FALSE(p.converged);
+    EXPECT_EQ(p.iterations, 6);
+    EXPECT_EQ(p.initialResidual, 1);
+    EXPECT_LT(p.finalResidual, 1e-3);
     EXPECT_EQ(amg.hierarchySetups(), 2);
 }
 

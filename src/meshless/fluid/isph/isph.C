@@ -821,7 +821,7 @@ void Foam::meshless::bodyModels::isph::advanceDim
                 last_ = solver_->solve(A_, bAll_.data(), pAll_.data());
             }
             std::copy(pAll_.begin(), pAll_.begin() + n, p_.data());
-            pIterate_.assign(pAll_.begin(), pAll_.end());
+            if (last_.converged) pIterate_.assign(pAll_.begin(), pAll_.end());
         }
         else
         {
@@ -837,9 +837,11 @@ void Foam::meshless::bodyModels::isph::advanceDim
             {
                 last_ = solver_->solve(A_, rhs_.data(), p_.data());
             }
-            pIterate_.assign(p_.data(), p_.data() + n);
+            if (last_.converged) pIterate_.assign(p_.data(), p_.data() + n);
         }
-        solvedSinceSave_ = true;
+        // A solve that did not converge is no guess: the re-solves start
+        // from the step's start pressure again
+        solvedSinceSave_ = last_.converged;
     }
 
     if (clipPressure_)

@@ -14,8 +14,17 @@ Foam::meshless::smoothingKernel::New
 )
 {
     const word kernelType(dict.get<word>("type"));
-    return selectConstructor
+    autoPtr<smoothingKernel> kernel = selectConstructor
     (
         dict, "kernel", kernelType, *dictionaryConstructorTablePtr_
     )(dict, dim, spacing);
+    if (!(kernel->support_ > 0 && kernel->norm_ > 0))
+    {
+        FatalErrorInFunction
+            << "Kernel " << kernelType << ": support " << kernel->support_
+            << " and normalisation " << kernel->norm_ << ", expected both"
+            << " > 0 (its constructor must call setNormalisation)"
+            << abort(FatalError);
+    }
+    return kernel;
 }

@@ -237,6 +237,7 @@ const krylovMethod BiCGSTAB
     [](HYPRE_Solver, const HYPRE_Int) {}
 };
 
+
 //- The preconditioner's set-up when the hierarchy is kept: none
 HYPRE_Int keptHierarchy
 (
@@ -736,13 +737,23 @@ Foam::meshless::linearSolver::performance Foam::meshless::BoomerAMG::solve
         }
     );
 
-    if (setUp && !kept)
+    if (setUp && !kept && p.iterations > 0)
     {
         h.hierarchyIterations = p.iterations;
     }
+    else if (kept && !p.converged)
+    {
+        // The kept hierarchy did not serve: again from the x reached with
+        // this matrix's own
+        h.hierarchySize = -1;
+        performance q = solve(A, b, x);
+        q.initialResidual = p.initialResidual;
+        q.iterations += p.iterations;
+        return q;
+    }
     else if (kept && p.iterations > 2*h.hierarchyIterations + 2)
     {
-        // The kept hierarchy no longer serves: set up at the next solve
+        // The kept hierarchy serves less and less: set up at the next solve
         h.hierarchySize = -1;
     }
     return p;
