@@ -25,7 +25,7 @@ Foam::meshless::gaussian::gaussian
     const scalar spacing
 )
 :
-    smoothingKernel(dict, dim, spacing),
+    kernelShape<gaussian>(dict, dim, spacing),
     qMax_(readPositiveOrDefault(dict, "horizon", 3)),
     C_(std::exp(-qMax_*qMax_))
 {
@@ -40,28 +40,4 @@ Foam::meshless::gaussian::gaussian
       : std::pow(pi, 1.5)*std::erf(Q) - 2*pi*Q*C_ - (4.0/3.0)*pi*Q2*Q*C_;
 
     setNormalisation(1/integral);
-}
-
-
-Foam::scalar Foam::meshless::gaussian::f(const scalar q) const
-{
-    return q < qMax_ ? std::exp(-q*q) - C_ : 0;
-}
-
-
-Foam::scalar Foam::meshless::gaussian::dfdq(const scalar q) const
-{
-    return q < qMax_ ? -2*q*std::exp(-q*q) : 0;
-}
-
-
-void Foam::meshless::gaussian::evaluate
-(
-    const double* r,
-    const label n,
-    double* w,
-    double* dw
-) const
-{
-    evaluateShape(*this, r, n, w, dw);
 }
