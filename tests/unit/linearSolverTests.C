@@ -41,6 +41,23 @@ struct linearSystem
 };
 
 
+//- The solution of the n x n system of the triplets by Eigen's SparseLU
+std::vector<double> directSolve
+(
+    const label n,
+    const std::vector<Eigen::Triplet<double>>& triplets,
+    const std::vector<double>& b
+)
+{
+    Eigen::SparseMatrix<double> direct(n, n);
+    direct.setFromTriplets(triplets.begin(), triplets.end());
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(direct);
+    const Eigen::VectorXd x =
+        lu.solve(Eigen::Map<const Eigen::VectorXd>(b.data(), n));
+    return std::vector<double>(x.data(), x.data() + n);
+}
+
+
 //- The 5-point matrix of -Laplacian (times h^2) on m x m interior points of
 //  a grid with Dirichlet boundaries, with upwind convection of cell Peclet
 //  number pe along x and y (pe = 0: symmetric positive definite). Each row
@@ -88,12 +105,7 @@ linearSystem gridSystem(const label m, const double pe)
         s.b[i] = 1 + std::sin(0.1*i) + 0.5*std::cos(7.3*i);
     }
 
-    Eigen::SparseMatrix<double> direct(n, n);
-    direct.setFromTriplets(triplets.begin(), triplets.end());
-    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(direct);
-    const Eigen::VectorXd x =
-        lu.solve(Eigen::Map<const Eigen::VectorXd>(s.b.data(), n));
-    s.xDirect.assign(x.data(), x.data() + n);
+    s.xDirect = directSolve(n, triplets, s.b);
     return s;
 }
 
@@ -412,12 +424,7 @@ linearSystem perturbed(const linearSystem& s, const double eps)
         }
     }
     p.b = s.b;
-    Eigen::SparseMatrix<double> direct(n, n);
-    direct.setFromTriplets(triplets.begin(), triplets.end());
-    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(direct);
-    const Eigen::VectorXd x =
-        lu.solve(Eigen::Map<const Eigen::VectorXd>(p.b.data(), n));
-    p.xDirect.assign(x.data(), x.data() + n);
+    p.xDirect = directSolve(n, triplets, p.b);
     return p;
 }
 
