@@ -63,19 +63,3 @@ void Foam::meshless::smoothingKernel::setNormalisation(const scalar sigma)
     norm_ = sigma/(dim_ == 2 ? h_*h_ : h_*h_*h_);
     support_ = qMax();
 }
-
-
-void Foam::meshless::smoothingKernel::evaluate
-(
-    const double* r,
-    const label n,
-    double* w,
-    double* dw
-) const
-{
-    for (label i = 0; i < n; ++i)
-    {
-        if (w) w[i] = W(r[i]);
-        if (dw) dw[i] = dWdr(r[i]);
-    }
-}

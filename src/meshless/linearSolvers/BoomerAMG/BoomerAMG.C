@@ -294,11 +294,11 @@ struct Foam::meshless::BoomerAMG::hypreObjects
     MPI_Comm krylovComm[2] = {MPI_COMM_SELF, MPI_COMM_SELF};
 
     //- The matrix the hierarchy was set up for: its row starts, global
-    //  columns and values, of this process's rows (hierarchySize < 0: none)
+    //  columns and values, of this process's rows (hierarchyStart empty:
+    //  none to keep)
     std::vector<label> hierarchyStart;
     std::vector<HYPRE_BigInt> hierarchyColumns;
     std::vector<double> hierarchyValues;
-    label hierarchySize = -1;
     label hierarchyOffset = -1;
     MPI_Comm hierarchyComm = MPI_COMM_SELF;
 
@@ -407,7 +407,8 @@ struct Foam::meshless::BoomerAMG::hypreObjects
     {
         const label n = M.n();
         bool close =
-            hierarchySize == n && hierarchyOffset == M.rowOffset()
+            label(hierarchyStart.size()) == n + 1
+         && hierarchyOffset == M.rowOffset()
          && hierarchyComm == comm;
         if (close)
         {
@@ -439,7 +440,6 @@ struct Foam::meshless::BoomerAMG::hypreObjects
         hierarchyColumns.resize(nnz);
         for (label k = 0; k < nnz; ++k) hierarchyColumns[k] = column(M, k);
         hierarchyValues.assign(M.values(), M.values() + nnz);
-        hierarchySize = n;
         hierarchyOffset = M.rowOffset();
         hierarchyComm = comm;
     }
@@ -467,8 +467,7 @@ struct Foam::meshless::BoomerAMG::hypreObjects
         {
             const label nnz = M.nnz();
             columns.resize(nnz);
-            const label* c = M.columns();
-            for (label k = 0; k < nnz; ++k) columns[k] = M.globalColumn(c[k]);
+            for (label k = 0; k < nnz; ++k) columns[k] = column(M, k);
             HYPRE_IJMatrixSetValues
             (
                 A, n, rowSizes.data(), rows.data(), columns.data(),
@@ -745,7 +744,7 @@ Foam::meshless::linearSolver::performance Foam::meshless::BoomerAMG::solve
     {
         // The kept hierarchy did not serve: again from the x reached with
         // this matrix's own
-        h.hierarchySize = -1;
+        h.hierarchyStart.clear();
         performance q = solve(A, b, x);
         q.initialResidual = p.initialResidual;
         q.iterations += p.iterations;
@@ -754,7 +753,7 @@ Foam::meshless::linearSolver::performance Foam::meshless::BoomerAMG::solve
     else if (kept && p.iterations > 2*h.hierarchyIterations + 2)
     {
         // The kept hierarchy serves less and less: set up at the next solve
-        h.hierarchySize = -1;
+        h.hierarchyStart.clear();
     }
     return p;
 }
