@@ -308,7 +308,6 @@ template<int Dim>
 void Foam::meshless::bodyModels::riemannWcsph::viscousReactions()
 {
     using namespace riemannEquations;
-    const label n = U_.size();
     viscousReaction_.resize(boundaries_.size());
     viscousOnFluid_.assign(boundaries_.size(), Zero);
     if (dissipativeOnFluid_.size() != boundaries_.size())
