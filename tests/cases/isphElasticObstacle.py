@@ -9,11 +9,11 @@ with the ISPH fluid and the TLSPH solid coupled by isphTlsph
   inside the obstacle or through the tank's walls, the total energy rising
   by less than 1e-3 of the column's potential energy, the obstacle's
   particle-scale noise); the first peak found (the displacement falls back
-  after it) and above 2 cm (5.3 cm at 0.218 s measured; the published band
+  after it) and above 2 cm (5.3 cm at 0.222 s measured; the published band
   4.10-4.91 cm is the default resolution's target, not this one's);
 - the coupling: every step's forces on the obstacle and on the water
   cancel to 1e-9 of their size; every step converged (none at
-  maxIterations; 3.0 iterations per step measured).
+  maxIterations; 2.9 iterations per step measured).
 """
 import os
 import re

@@ -27,7 +27,8 @@ SETUP = ("Walhorn et al. 2005 as the ULPH tutorial (column 0.146 x 0.292 m,"
          " tank 0.584 m, obstacle 0.012 x 0.08 m at x = 0.292 m), rho_s"
          " 2500, E 1 MPa, nu 0 (BENCHMARKS.md), plane strain, TLSPH St"
          " Venant-Kirchhoff, implicit; ISPH water twice as coarse with the"
-         " dam break tutorial's options, no-slip ghost walls, hydrostatic"
+         " dam break tutorial's options but the divergence-free source"
+         " alone, no-slip ghost walls, hydrostatic"
          " start, adaptive step maxCo 0.25 (at most 5e-4 s); isphTlsph"
          " coupling iterated (IQN-ILS).")
 
