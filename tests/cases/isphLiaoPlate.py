@@ -7,16 +7,18 @@ and the plate's fold onto the floor to 0.32 s, with the checks of
 riemannLiaoPlate.py: the validation's (no particle lost, the water in the
 tank, the plate out of the floor, the coupling's forces equal and opposite
 at every step), the impact between 0.2 and 0.3 s and the first peak of the
-tip's x above 0.03 m. Three of the validation's checks are missed, as the
-tutorial's README documents (KNOWN): the total energy rises before the
-impact (the density-invariant source and the gate's lift), water comes
-within 0.25 dx of the plate's particles, and the plate's particle-scale
-noise exceeds 0.1 sqrt(g H) at 0.30 s (its tip bouncing on the floor).
-The energy's rise is held below RISE_BOUND (1.91 J/m measured; 10.9 J/m
-before the structure's wall contact stopped speeding water up), and at
-most MAX_UNCONVERGED coupling step reaches maxIterations (one, at the
-plate's fold onto the floor at 0.289 s, which ends at its least iterate,
-relative residual 9e-4).
+tip's x above 0.03 m. One of the validation's checks is missed to 0.32
+s, as the tutorial's README documents (KNOWN): the total energy rises
+before the impact (the time integration's error, first order in the
+step; the water comes within 0.25 dx of the plate's particles only
+later). The energy's rise is held below RISE_BOUND (0.446 J/m measured;
+1.91 J/m with the density-invariant source, 10.9 J/m before the
+structure's wall contact stopped speeding water up), and at
+most MAX_UNCONVERGED coupling steps reach maxIterations (two, as the
+plate folds onto the floor at 0.296 and 0.306 s, which end at their
+least iterates, relative residuals 1.6e-4 and 2.4e-4 against the
+tolerance's 1e-4; with the density-invariant source one, at 0.289 s,
+9e-4).
 """
 import os
 import re
@@ -29,11 +31,10 @@ from isphElasticGate import iteration_stats  # noqa: E402
 from riemannLiaoPlate import plate_checks  # noqa: E402
 
 TUTORIAL = "tutorials/isphTlsphFoam/liaoPlate"
-KNOWN = ("total energy not growing", "no water particle inside the plate",
-         "the plate's particle-scale velocity noise")
+KNOWN = ("total energy not growing",)
 POTENTIAL = 1000 * 9.81 * 0.4 ** 2 * 0.2 / 2     # the column's [J/m]
-RISE_BOUND = 3.0        # [J/m]: 1.91 measured
-MAX_UNCONVERGED = 1
+RISE_BOUND = 1.0        # [J/m]: 0.446 measured
+MAX_UNCONVERGED = 2
 
 
 def plate(t, work):
