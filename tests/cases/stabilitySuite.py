@@ -68,7 +68,9 @@ def open_end_wall(dx):
 def depth_checks(t):
     """stability.wall_depth on a wall with an open end: a particle beside
     the end, past the wall's top, is in no wall (it was 0.8 dx deep for
-    the Riemann dam break's full form, which has no lid)"""
+    the Riemann dam break's full form, which has no lid); nor is a splash
+    beside the tank that flew over it (4.6 dx deep for the ISPH Liao
+    plate's full form)"""
     dx = 0.001
     wall = open_end_wall(dx)
     cases = [("beside the open end, 0.9 dx above the top", (-0.3, 10.9),
@@ -90,6 +92,22 @@ def depth_checks(t):
             # across each normal: 0.50 dx here
             t.check("wall depth of a particle %s: %.2f dx > 0" % (what, got),
                     got > 0)
+        else:
+            t.check("wall depth of a particle %s: %.3f dx (%.1f)"
+                    % (what, got, expected), abs(got - expected) < 1e-9)
+    # A splash that has flown over the walls and landed beside the tank is
+    # behind the face without having gone through the wall; inside the
+    # wall's cells it still counts
+    for what, (a, b), expected in [
+            ("beside the tank after flying over it, 0.3 dx past the last"
+             " layer", (4.3, 5.2), None),
+            ("0.7 dx inside the wall after flying over it", (0.7, 5.0),
+             0.7)]:
+        got = stability.wall_depth([(a * dx, b * dx, 0.0)], wall, dx,
+                                   4 * dx, [True]) / dx
+        if expected is None:
+            t.check("wall depth of a particle %s: %.2f dx <= 0" % (what, got),
+                    got <= 0)
         else:
             t.check("wall depth of a particle %s: %.3f dx (%.1f)"
                     % (what, got, expected), abs(got - expected) < 1e-9)

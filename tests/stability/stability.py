@@ -42,11 +42,12 @@ says whether the run reached its end):
   - depth: no fluid particle deeper than 0.5 dx (its own spacing) inside
     a wall (ghost walls: the face lies the wall particle's wallDistance
     in front of it, along its normal, which points into the wall, for the
-    wall particles that lie along their normal from the fluid particle)
-    or a
-    structure (its face half the solid's spacing beyond its outer
-    particles, the outward normal from the solid's own neighbours; a
-    fluid particle whose nearest solid particle is inside the solid is
+    wall particles that lie along their normal from the fluid particle;
+    a splash that has flown over a wall body, above every particle of it
+    at a written time, counts only inside that wall's cells, not beside
+    the tank) or a structure (its face half the solid's spacing beyond its
+    outer particles, the outward normal from the solid's own neighbours;
+    a fluid particle whose nearest solid particle is inside the solid is
     at least one solid spacing deep);
   - energy: the total (kinetic + strain + potential of every moving body,
     less the work of a moving tank) never above its lowest earlier value
@@ -363,7 +364,7 @@ def lattice_axes(points, dx):
     return (1.0, 0.0), (0.0, 1.0)
 
 
-def wall_depth(fluid, wall, dxw, reach):
+def wall_depth(fluid, wall, dxw, reach, over=None):
     """Deepest fluid particle inside a ghost wall [m]: of the wall particles
     within reach that lie along their own normal from it (the offset
     across the normal within half the wall's spacing dxw), the face is the
@@ -375,7 +376,11 @@ def wall_depth(fluid, wall, dxw, reach):
     the particles that wrap round the end have normals from the end's
     edge, and the plane through the edge across such a normal cuts the
     open air beside the end, where a particle that rises past the wall's
-    top is in no wall's cell"""
+    top is in no wall's cell. over: per fluid particle, whether it has
+    flown over this wall (above every particle of it at a written time): a
+    splash that lands beside the tank is behind a wall's face without
+    having gone through it, so for such a particle only a wall's cells
+    count"""
     x = wall["positions"]
     n, d = wall.get("normal"), wall.get("wallDistance")
     if n is None or d is None:
@@ -398,7 +403,8 @@ def wall_depth(fluid, wall, dxw, reach):
         return False
 
     deepest = -math.inf
-    for p in fluid:
+    for k, p in enumerate(fluid):
+        flown = over is not None and over[k]
         for s in grid.near(p):
             rx, ry = x[s][0] - p[0], x[s][1] - p[1]
             along = rx * n[s][0] + ry * n[s][1]
@@ -407,7 +413,8 @@ def wall_depth(fluid, wall, dxw, reach):
                 continue
             depth = d[s] - along
             if depth > deepest and (depth <= 0 or inside(p)
-                                    or (along < 0 and flat(s))):
+                                    or (along < 0 and flat(s)
+                                        and not flown)):
                 deepest = depth
     return deepest
 
@@ -488,6 +495,9 @@ def invariants(case):
     counts = open_counts(case, bodies)
     n0, lost, bad, deepest, splash = {}, None, None, -math.inf, 0.0
     deepest_where = ""
+    # Per fluid and wall body, the ids seen above every particle of the
+    # wall at a written time
+    flew = {(f, w): set() for f in fluids for w in walls}
     for value, name in series:
         clouds = {b: read_cloud(case, name, b) for b in bodies
                   if os.path.isdir(os.path.join(case, name, "lagrangian", b))}
@@ -511,11 +521,19 @@ def invariants(case):
                 continue
             xf = clouds[f]["positions"]
             dxf = bodies[f]["spacing"]
+            ids = clouds[f].get("id")
             for w in walls:
                 if w in clouds:
+                    over = None
+                    if ids is not None:
+                        top = max((q[1] for q in clouds[w]["positions"]),
+                                  default=math.inf)
+                        flew[f, w].update(i for i, q in zip(ids, xf)
+                                          if q[1] > top)
+                        over = [i in flew[f, w] for i in ids]
                     dxw = bodies[w]["spacing"]
                     d = wall_depth(xf, clouds[w], dxw,
-                                   max(2 * dxf, 2 * dxw)) / dxf
+                                   max(2 * dxf, 2 * dxw), over) / dxf
                     if d > deepest:
                         deepest, deepest_where = d, "%s in %s at %g s" % (
                             f, w, value)
