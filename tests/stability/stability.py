@@ -516,6 +516,9 @@ def invariants(case):
             if n != expected and lost is None:
                 lost = "%s: %d, expected %d at %g s" % (b, n, expected,
                                                          value)
+        # The top of each wall body at this time
+        tops = {w: max((q[1] for q in clouds[w]["positions"]),
+                       default=math.inf) for w in walls if w in clouds}
         for f in fluids:
             if f not in clouds:
                 continue
@@ -526,10 +529,8 @@ def invariants(case):
                 if w in clouds:
                     over = None
                     if ids is not None:
-                        top = max((q[1] for q in clouds[w]["positions"]),
-                                  default=math.inf)
                         flew[f, w].update(i for i, q in zip(ids, xf)
-                                          if q[1] > top)
+                                          if q[1] > tops[w])
                         over = [i in flew[f, w] for i in ids]
                     dxw = bodies[w]["spacing"]
                     d = wall_depth(xf, clouds[w], dxw,
