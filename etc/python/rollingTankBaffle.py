@@ -14,7 +14,8 @@ pointDisplacement monitor 'tip' (a run and its restarts), and reports the
 tip's deflection in the tank's frame (its position turned back by the
 roll, minus its reference position): the largest, and the amplitude (half
 the range) and mean over each of the last two periods, with the roll's
-period for scale.
+period for scale; beside every other solver's tutorial of the scene (its
+tip.dat), the amplitude over each period and how far this run lags it.
 
 Writes validation/tip.dat (tip-dx<spacing>.dat for another spacing): t,
 the tip's x and y, its deflection in the tank's frame, every 5 ms, which
@@ -51,7 +52,8 @@ from foamMonitor import (arguments, case_spacing, pyplot, read_monitor,
 from fsiChecks import (check_rows, end_time, energy_total,
                        momentum_exchange, print_checks, velocity_noise,
                        written_times_checks)
-from solverComparison import (cost_rows, plot_comparison, resample,
+from solverComparison import (best_shift, cost_rows, other_solvers,
+                              plot_comparison, read_history, resample,
                               write_history)
 
 LENGTH = 0.608      # tank's inner length [m]
@@ -83,12 +85,12 @@ class roll:
                 self.origin[1] + math.sin(a) * x + math.cos(a) * y)
 
 
-def period_figures(ts, ds, period):
-    """(amplitude, mean) of the series over each of the last two whole
-    periods: [(t0, t1, amplitude, mean)]"""
+def period_figures(ts, ds, period, last=2):
+    """(amplitude, mean) of the series over each of the last 'last' whole
+    periods (every whole period with None): [(t0, t1, amplitude, mean)]"""
     out = []
     n = int(math.floor(ts[-1] / period + 1e-9))
-    for k in (n - 2, n - 1):
+    for k in range(0 if last is None else n - last, n):
         if k < 0:
             continue
         t0, t1 = k * period, (k + 1) * period
@@ -136,6 +138,38 @@ def checks_of(case, motion, fluid, solid, dx, solid_dx, c0, h):
                    " (largest |F_fs + F_sf|/|F_fs| %.1e <= 1e-9)"
                    % (fluid, solid, solid, fluid, balance), balance <= 1e-9))
     return checks
+
+
+def comparison(here, solver, own, period):
+    """Markdown (also printed) comparing the history 'own' (tip.dat just
+    written) with every other solver's tutorial of the scene: the
+    deflection's amplitude over each whole period, and from the third
+    period on the shift (within a quarter period) that best aligns the
+    two, with the RMS difference at it and unshifted"""
+    rows = read_history(own)
+    text = ""
+    for other, theirs in other_solvers(here, "rollingTankBaffle", solver):
+        mine = period_figures([r[0] for r in rows], [r[3] for r in rows],
+                              period, None)
+        its = period_figures([r[0] for r in theirs], [r[3] for r in theirs],
+                             period, None)
+        if not mine or not its:
+            continue
+        text += ("\n## Beside %s's tutorial (its validation/tip.dat)\n\n"
+                 "| period | amplitude, this run | amplitude, %s |\n"
+                 "|---|---|---|\n" % (other, other))
+        for k, (a, b) in enumerate(zip(mine, its)):
+            text += ("| %d (%.3f-%.3f s) | %.4f m | %.4f m |\n"
+                     % (k + 1, a[0], a[1], a[2], b[2]))
+        shift = best_shift(rows, theirs, 3, 2 * period, period / 4)
+        if shift is not None:
+            summary = ("From the third period on this run lags %s's by %.0f"
+                       " ms, the shift that best aligns the two deflections"
+                       " (RMS difference %.1f mm, %.1f mm unshifted)."
+                       % ((other,) + tuple(1e3 * v for v in shift)))
+            print(summary)
+            text += "\n%s\n" % summary
+    return text
 
 
 def validate(here, solver, default_dx, fluid_ratio=1, fluid="oil",
@@ -204,6 +238,7 @@ def validate(here, solver, default_dx, fluid_ratio=1, fluid="oil",
             f.write("| %s | %s |\n" % (what, value))
         f.write("\n| check | |\n|---|---|\n")
         f.write("".join(row + "\n" for row in check_rows(checks)))
+        f.write(comparison(here, solver, own, motion.period))
 
     plt = pyplot()
     if plt is not None:

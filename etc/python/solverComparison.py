@@ -4,7 +4,7 @@ file and read by the others' to plot beside their own: no measured history
 exists for these scenes, so the solvers are compared with each other.
 
     from solverComparison import (resample, write_history, read_history,
-                                  other_solvers)
+                                  other_solvers, best_shift)
     write_history(path, header, resample(step, ts, xs, ys))
     for solver, rows in other_solvers(here, "liaoPlate", "riemannSphFoam"):
         ...
@@ -55,6 +55,29 @@ def other_solvers(here, scene, solver, name="tip.dat"):
         if other != solver:
             out.append((other, read_history(path)))
     return out
+
+
+def best_shift(rows, others, column, start, most):
+    """How far this history lags another's: rows and others are
+    histories on the same time grid (resample with the same step); of the
+    shifts within +-most seconds, the one that makes the RMS difference of
+    'column' from time 'start' on least, this history read that much
+    later. Returns (shift [s], RMS at it, RMS unshifted), or None when
+    the histories do not overlap by more than 'most' after 'start'"""
+    n = min(len(rows), len(others))
+    step = rows[1][0] - rows[0][0] if n > 1 else 0.0
+    reach = int(round(most / step)) if step > 0 else 0
+    first = next((i for i in range(n) if rows[i][0] >= start - 1e-9), n)
+    if n - first <= reach:
+        return None
+
+    def rms(k):
+        pairs = [(rows[i + k][column], others[i][column])
+                 for i in range(max(first, first - k), min(n, n - k))]
+        return math.sqrt(sum((a - b) ** 2 for a, b in pairs) / len(pairs))
+
+    k = min(range(-reach, reach + 1), key=rms)
+    return k * step, rms(k), rms(0)
 
 
 def own_spacings(here, name, own):

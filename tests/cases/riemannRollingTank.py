@@ -14,7 +14,12 @@ half period of the roll to 0.5 s:
   reference position, to 1e-8 m (the roll read back with 6 digits), at
   every written time;
 - the oil, lagging the tank as it rolls counterclockwise, bends the
-  baffle's tip to -x in the tank's frame by 0.5 s (-53 mm measured).
+  baffle's tip to -x in the tank's frame by 0.5 s (-53 mm measured);
+- solverComparison.best_shift, with which the validation says how far a
+  run lags another solver's tutorial: a sine read 50 ms late is found 50
+  ms behind, the aligned RMS difference zero (1e-12) and the unshifted
+  one that of the two sines (2 sin(omega 0.025 s)/sqrt(2)); a history
+  that ends before the comparison starts gives None.
 """
 import math
 import os
@@ -27,6 +32,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(here)),
 from caseTest import run_parts, run_validated  # noqa: E402
 from foamCloud import read_cloud, times  # noqa: E402
 from rollingTankBaffle import roll  # noqa: E402
+from solverComparison import best_shift, resample  # noqa: E402
 
 TUTORIAL = "tutorials/riemannSphFoam/rollingTankBaffle"
 
@@ -66,5 +72,20 @@ def tank(t, work):
     tank_checks(t, TUTORIAL, work)
 
 
+def shift(t, work):
+    omega, step = 2 * math.pi / 1.211, 0.005
+    ts = [k * step for k in range(2423)]
+    late = resample(step, ts, [math.sin(omega * (v - 0.05)) for v in ts])
+    ref = resample(step, ts, [math.sin(omega * v) for v in ts])
+    got = best_shift(late, ref, 1, 2.422, 1.211 / 4)
+    expected = math.sqrt(2) * math.sin(omega * 0.025)
+    t.check("best_shift: a sine read 50 ms late lags by %.4f s, RMS %.1e"
+            " aligned, %.6f unshifted (%.6f)" % (got + (expected,)),
+            abs(got[0] - 0.05) < 1e-9 and got[1] < 1e-12
+            and abs(got[2] - expected) < 1e-3 * expected)
+    t.check("best_shift: a history that ends before the comparison starts"
+            " gives None", best_shift(late[:400], ref, 1, 2.422, 0.3) is None)
+
+
 if __name__ == "__main__":
-    sys.exit(run_parts("riemannRollingTank", tank))
+    sys.exit(run_parts("riemannRollingTank", shift, tank))
